@@ -1,0 +1,31 @@
+// apse — area-preserving parameterizations for spherical ellipses.
+// SPDX-License-Identifier: MIT
+#pragma once
+
+/// @file config.hpp
+/// Version macros and the function qualifiers every public apse function carries.
+
+#define APSE_VERSION_MAJOR 0
+#define APSE_VERSION_MINOR 1
+#define APSE_VERSION_PATCH 0
+/// Single integer version: major * 10000 + minor * 100 + patch.
+#define APSE_VERSION (APSE_VERSION_MAJOR * 10000 + APSE_VERSION_MINOR * 100 + APSE_VERSION_PATCH)
+
+/// `APSE_FUNC` marks every public function: `__host__ __device__ inline` when compiled by a CUDA
+/// compiler (nvcc, or clang in CUDA mode), plain `inline` otherwise.
+#if defined(__CUDACC__)
+#define APSE_FUNC __host__ __device__ inline
+#define APSE_DEVICE_COMPILE 1
+#else
+#define APSE_FUNC inline
+#define APSE_DEVICE_COMPILE 0
+#endif
+
+/// `APSE_ASSERT(cond)`: a debug check of an internal invariant. It compiles to nothing under
+/// `NDEBUG`, in device code, and when `APSE_DISABLE_ASSERT` is defined; never throws.
+#if defined(NDEBUG) || defined(APSE_DISABLE_ASSERT) || defined(__CUDA_ARCH__)
+#define APSE_ASSERT(cond) ((void)0)
+#else
+#include <cassert>
+#define APSE_ASSERT(cond) assert(cond)
+#endif

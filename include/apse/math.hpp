@@ -1,0 +1,109 @@
+// apse — area-preserving parameterizations for spherical ellipses.
+// SPDX-License-Identifier: MIT
+#pragma once
+
+/// @file math.hpp
+/// Device-safe scalar helpers shared by every apse header: constants, min/max/clamp, guarded
+/// square roots and inverse trigonometric functions, and a bracketed Newton–bisection root finder.
+
+#include <cmath>
+#include <limits>
+
+#include "config.hpp"
+
+namespace apse {
+
+/// pi in type T (rounded to nearest).
+template <class T> constexpr T pi_v = T(3.141592653589793238462643383279502884L);
+/// pi / 2 in type T.
+template <class T> constexpr T half_pi_v = T(1.570796326794896619231321691639751442L);
+/// 2 pi in type T.
+template <class T> constexpr T two_pi_v = T(6.283185307179586476925286766559005768L);
+
+/// Quiet NaN of type T (the value apse functions return outside their domain).
+/// (In device code without `--expt-relaxed-constexpr` std::numeric_limits is unavailable, hence
+/// the CUDA intrinsics there.)
+template <class T> APSE_FUNC T quiet_nan() noexcept {
+#if defined(__CUDA_ARCH__)
+    if constexpr (sizeof(T) == sizeof(float)) return T(__int_as_float(0x7fc00000));
+    else return T(__longlong_as_double(0x7ff8000000000000LL));
+#else
+    return std::numeric_limits<T>::quiet_NaN();
+#endif
+}
+
+/// Machine epsilon of type T (float or double), usable in host and device code.
+template <class T> APSE_FUNC constexpr T epsilon() noexcept {
+    static_assert(sizeof(T) == sizeof(float) || sizeof(T) == sizeof(double), "float or double");
+    return sizeof(T) == sizeof(float) ? T(0x1p-23) : T(0x1p-52);
+}
+
+/// True if x is NaN (written without std::isnan so it is usable in device code).
+template <class T> APSE_FUNC constexpr bool is_nan(T x) noexcept { return !(x == x); }
+
+/// True if x is neither NaN nor +-infinity.
+template <class T> APSE_FUNC constexpr bool is_finite(T x) noexcept {
+    return x - x == x - x;  // inf - inf and NaN - NaN are NaN, which compares unequal
+}
+
+/// x * x.
+template <class T> APSE_FUNC constexpr T sqr(T x) noexcept { return x * x; }
+
+/// The smaller of a and b (b if either is NaN).
+template <class T> APSE_FUNC constexpr T min_of(T a, T b) noexcept { return a < b ? a : b; }
+
+/// The larger of a and b (b if either is NaN).
+template <class T> APSE_FUNC constexpr T max_of(T a, T b) noexcept { return a > b ? a : b; }
+
+/// x clamped to [lo, hi]; NaN maps to lo.
+template <class T> APSE_FUNC constexpr T clamp(T x, T lo, T hi) noexcept {
+    return x > lo ? (x < hi ? x : hi) : lo;
+}
+
+/// sqrt(max(x, 0)): for quantities that are non-negative in exact arithmetic but may round
+/// slightly below zero. NaN stays NaN.
+template <class T> APSE_FUNC T safe_sqrt(T x) noexcept { return std::sqrt(x < T(0) ? T(0) : x); }
+
+/// asin of x clamped to [-1, 1]. NaN stays NaN.
+template <class T> APSE_FUNC T safe_asin(T x) noexcept {
+    return std::asin(x < T(-1) ? T(-1) : (x > T(1) ? T(1) : x));
+}
+
+/// acos of x clamped to [-1, 1]. NaN stays NaN.
+template <class T> APSE_FUNC T safe_acos(T x) noexcept {
+    return std::acos(x < T(-1) ? T(-1) : (x > T(1) ? T(1) : x));
+}
+
+/// Result of find_root_bracketed: the root estimate and the number of Newton/bisection steps.
+template <class T> struct RootResult {
+    T x;             ///< the root estimate, always inside the initial bracket
+    int iterations;  ///< the number of function evaluations after the initial guess
+};
+
+/// Solves f(x) = 0 for an increasing function on [lo, hi] with f(lo) <= 0 <= f(hi), by Newton
+/// steps safeguarded with bisection. `eval(x, value, derivative)` writes f(x) and f'(x).
+/// Starts from `guess` (clamped into the bracket); stops when |f(x)| <= tolerance, when the
+/// bracket has collapsed to a few ulps, or after `max_iterations` evaluations (a hard cap: the
+/// loop always terminates). Any Newton step leaving the current bracket is replaced by a
+/// bisection step, so the result stays inside [lo, hi] even for NaN values of f or f'.
+template <class T, class Eval>
+APSE_FUNC RootResult<T> find_root_bracketed(Eval&& eval, T lo, T hi, T guess, T tolerance,
+                                            int max_iterations) noexcept {
+    T x = clamp(guess, lo, hi);
+    int it = 0;
+    for (;;) {
+        T value = T(0), derivative = T(0);
+        eval(x, value, derivative);
+        if (!(std::fabs(value) > tolerance)) break;  // converged (or NaN: stop, x is in bracket)
+        if (value < T(0)) lo = x; else hi = x;
+        if (it >= max_iterations || !(hi - lo > T(4) * epsilon<T>() * max_of(std::fabs(lo), std::fabs(hi))))
+            break;
+        ++it;
+        T next = x - value / derivative;
+        if (!(next > lo && next < hi)) next = T(0.5) * (lo + hi);
+        x = next;
+    }
+    return {x, it};
+}
+
+}  // namespace apse

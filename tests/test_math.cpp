@@ -1,0 +1,82 @@
+// Tests of math.hpp: the guarded scalar helpers and the bracketed Newton–bisection root finder.
+#include <apse/math.hpp>
+
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <limits>
+
+TEMPLATE_TEST_CASE("constants and predicates", "[math]", float, double) {
+    using T = TestType;
+    CHECK(apse::epsilon<T>() == std::numeric_limits<T>::epsilon());
+    CHECK(apse::pi_v<T> == T(std::acos(-1.0L)));
+    CHECK(apse::two_pi_v<T> == T(2) * apse::pi_v<T>);
+    CHECK(apse::is_nan(apse::quiet_nan<T>()));
+    CHECK_FALSE(apse::is_nan(T(1)));
+    CHECK(apse::is_finite(T(1)));
+    CHECK_FALSE(apse::is_finite(std::numeric_limits<T>::infinity()));
+    CHECK_FALSE(apse::is_finite(-std::numeric_limits<T>::infinity()));
+    CHECK_FALSE(apse::is_finite(apse::quiet_nan<T>()));
+    CHECK(apse::is_finite(std::numeric_limits<T>::max()));
+    CHECK(apse::is_finite(std::numeric_limits<T>::denorm_min()));
+}
+
+TEMPLATE_TEST_CASE("guarded functions stay in their domain", "[math]", float, double) {
+    using T = TestType;
+    CHECK(apse::safe_sqrt(T(-1e-30)) == T(0));
+    CHECK(apse::safe_sqrt(T(4)) == T(2));
+    CHECK(apse::safe_asin(T(1) + apse::epsilon<T>()) == apse::half_pi_v<T>);
+    CHECK(apse::safe_acos(T(-1) - apse::epsilon<T>()) == apse::pi_v<T>);
+    CHECK(apse::safe_acos(T(1.5)) == T(0));
+    CHECK(apse::is_nan(apse::safe_sqrt(apse::quiet_nan<T>())));
+    CHECK(apse::clamp(T(2), T(0), T(1)) == T(1));
+    CHECK(apse::clamp(T(-2), T(0), T(1)) == T(0));
+    CHECK(apse::clamp(apse::quiet_nan<T>(), T(0), T(1)) == T(0));
+    CHECK(apse::min_of(T(1), T(2)) == T(1));
+    CHECK(apse::max_of(T(1), T(2)) == T(2));
+    CHECK(apse::sqr(T(-3)) == T(9));
+}
+
+TEMPLATE_TEST_CASE("root finder converges, stays bracketed and terminates", "[math]", float, double) {
+    using T = TestType;
+    // sqrt(2) as the root of x^2 - 2 on [0, 2]: Newton converges quadratically.
+    int calls = 0;
+    auto square = [&calls](T x, T& value, T& derivative) {
+        ++calls;
+        value = x * x - T(2);
+        derivative = T(2) * x;
+    };
+    const auto r = apse::find_root_bracketed(square, T(0), T(2), T(1), T(4) * apse::epsilon<T>(), 50);
+    CHECK(std::fabs(r.x - std::sqrt(T(2))) <= T(2) * apse::epsilon<T>());
+    CHECK(r.iterations <= 6);
+    CHECK(calls == r.iterations + 1);
+
+    // A wrong derivative (0 here) must fall back to bisection and still converge.
+    auto flat = [](T x, T& value, T& derivative) {
+        value = x - T(0.3);
+        derivative = T(0);
+    };
+    const auto b = apse::find_root_bracketed(flat, T(0), T(1), T(0.9), T(0), 200);
+    CHECK(std::fabs(b.x - T(0.3)) <= T(4) * apse::epsilon<T>());
+
+    // NaN values: the result stays inside the bracket and the loop ends at the cap.
+    auto broken = [](T, T& value, T& derivative) {
+        value = apse::quiet_nan<T>();
+        derivative = apse::quiet_nan<T>();
+    };
+    const auto n = apse::find_root_bracketed(broken, T(0), T(1), T(0.5), T(1e-3), 10);
+    CHECK(n.x >= T(0));
+    CHECK(n.x <= T(1));
+
+    // A function with no root in the bracket: bounded work (bisection towards the nearer end).
+    int capped_calls = 0;
+    auto positive = [&capped_calls](T x, T& value, T& derivative) {
+        ++capped_calls;
+        value = x + T(1);
+        derivative = T(1);
+    };
+    const auto p = apse::find_root_bracketed(positive, T(0), T(1), T(0.5), T(0), 20);
+    CHECK(p.x >= T(0));
+    CHECK(p.x <= T(1e-5));  // 20 halvings of 0.5
+    CHECK(capped_calls <= 21);
+}

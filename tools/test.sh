@@ -1,0 +1,48 @@
+#!/usr/bin/env bash
+# Builds and runs apse's whole test suite (the README's second Quick-start command; .ci/run runs
+# exactly this). Installs missing Debian packages first. Builds, each into build/<name>:
+#   release : g++, Release, all tests + consumer tests (find_package / add_subdirectory /
+#             FetchContent) + the nvcc device-compile test + benchmark smoke runs
+#   sanitize: g++, Debug, AddressSanitizer + UndefinedBehaviorSanitizer
+#   clang   : clang++, Release
+# Prints "N passed, N failed" over all builds at the end; exits non-zero on any failure.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+. tools/deps.sh
+apse_install_deps "${APSE_BASE_PACKAGES[@]}" clang libboost-math-dev python3
+
+jobs=${APSE_JOBS:-2}
+passed=0
+failed=0
+
+run_build() {  # run_build <name> <cmake args...>
+  local name=$1; shift
+  echo "== [$name] configure"
+  cmake -S . -B "build/$name" -G Ninja -DAPSE_BUILD_EXAMPLES=ON "$@" > "build/$name.configure.log" 2>&1 \
+    || { cat "build/$name.configure.log"; return 1; }
+  echo "== [$name] build"
+  cmake --build "build/$name" -j "$jobs"
+  echo "== [$name] test"
+  local log="build/$name.ctest.log"
+  (cd "build/$name" && ctest -j "$jobs" --output-on-failure) 2>&1 | tee "$log" || true
+  local line total nfail
+  line=$(grep -E "tests passed, [0-9]+ tests failed out of [0-9]+" "$log" | tail -n1 || true)
+  total=$(sed -E 's/.* out of ([0-9]+).*/\1/' <<<"$line")
+  nfail=$(sed -E 's/.* ([0-9]+) tests failed.*/\1/' <<<"$line")
+  if [ -z "$line" ]; then total=0; nfail=1; fi
+  passed=$((passed + total - nfail))
+  failed=$((failed + nfail))
+  return 0
+}
+
+mkdir -p build
+start=$(date +%s)
+run_build release -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_COMPILER=g++
+run_build sanitize -DCMAKE_BUILD_TYPE=Debug -DCMAKE_CXX_COMPILER=g++ \
+  "-DCMAKE_CXX_FLAGS=-fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer" \
+  -DAPSE_TEST_CONSUMERS=OFF -DAPSE_TEST_CUDA=OFF -DAPSE_BUILD_BENCHMARKS=OFF
+run_build clang -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_COMPILER=clang++ \
+  -DAPSE_TEST_CONSUMERS=OFF -DAPSE_TEST_CUDA=OFF
+echo "== all builds done in $(( $(date +%s) - start )) s"
+echo "$passed passed, $failed failed"
+[ "$failed" -eq 0 ]
