@@ -51,6 +51,12 @@ TEMPLATE_TEST_CASE("root finder converges, stays bracketed and terminates", "[ma
     CHECK(r.iterations <= 6);
     CHECK(calls == r.iterations + 1);
 
+    // Tolerance 0 cannot be met (x*x - 2 never rounds to 0 near sqrt(2)): the finder must stop
+    // when the Newton step drops below an ulp instead of bisecting away from the root.
+    const auto z = apse::find_root_bracketed(square, T(0), T(2), T(1), T(0), 60);
+    CHECK(std::fabs(z.x - std::sqrt(T(2))) <= T(2) * apse::epsilon<T>());
+    CHECK(z.iterations <= 8);
+
     // A wrong derivative (0 here) must fall back to bisection and still converge.
     auto flat = [](T x, T& value, T& derivative) {
         value = x - T(0.3);

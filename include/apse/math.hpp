@@ -83,7 +83,8 @@ template <class T> struct RootResult {
 /// Solves f(x) = 0 for an increasing function on [lo, hi] with f(lo) <= 0 <= f(hi), by Newton
 /// steps safeguarded with bisection. `eval(x, value, derivative)` writes f(x) and f'(x).
 /// Starts from `guess` (clamped into the bracket); stops when |f(x)| <= tolerance, when the
-/// bracket has collapsed to a few ulps, or after `max_iterations` evaluations (a hard cap: the
+/// bracket has collapsed to a few ulps, when a Newton step no longer moves x (it is below an
+/// ulp), or after `max_iterations` evaluations (a hard cap: the
 /// loop always terminates). Any Newton step leaving the current bracket is replaced by a
 /// bisection step, so the result stays inside [lo, hi] even for NaN values of f or f'.
 template <class T, class Eval>
@@ -99,9 +100,9 @@ APSE_FUNC RootResult<T> find_root_bracketed(Eval&& eval, T lo, T hi, T guess, T 
         if (it >= max_iterations || !(hi - lo > T(4) * epsilon<T>() * max_of(std::fabs(lo), std::fabs(hi))))
             break;
         ++it;
-        T next = x - value / derivative;
-        if (!(next > lo && next < hi)) next = T(0.5) * (lo + hi);
-        x = next;
+        const T next = x - value / derivative;
+        if (next == x) break;  // the Newton step is below an ulp of x: x is as good as it gets
+        x = (next > lo && next < hi) ? next : T(0.5) * (lo + hi);
     }
     return {x, it};
 }
