@@ -1,0 +1,235 @@
+// apse — area-preserving parameterizations for spherical ellipses.
+// SPDX-License-Identifier: MIT
+#pragma once
+
+/// @file detail/cumulative_area.hpp
+/// The cumulative areas the maps invert (MATH.md §4–5), written without cancellation, with their
+/// densities and the densities' slopes (for Halley steps and for the cheap Hermite increments of
+/// detail/inversion.hpp).
+///
+/// **Radial** (§4). The boundary is parametrised by the *orthographic eccentric anomaly* tau:
+/// the boundary point at tau is P(tau) = (a cos tau, b sin tau, C(tau)), a = sin alpha,
+/// b = sin beta, C = cos theta_max = sqrt(cos^2 alpha cos^2 tau + cos^2 beta sin^2 tau); its
+/// azimuth is tan phi = (b/a) tan tau. In tau the area density is smooth and bounded,
+///     dOmega_r/dtau = (1 − cos theta_max) dphi/dtau = a b / (1 + C(tau))   in [ab/2, ab],
+/// (*derived*; the paper works in phi, where the density varies by 1/(1 − cos beta)), and
+/// MATH.md's cancellation-free Omega_r, rewritten in tau with the homogeneity of R_J (*derived*;
+/// the gnomonic anomaly t has cos t = cos alpha cos tau / C, sin t = cos beta sin tau / C, and
+/// w = sqrt(1 − m sin^2 t) = cos alpha / C), is
+///     Omega_r(tau) = (a b cos^2 beta / (3 cos alpha)) sin^3 tau
+///                      R_J(cos^2 tau, 1, C^2/cos^2 alpha, cos^2 tau + cos^2 beta sin^2 tau)
+///                  + atan2((b/a) sin tau cos tau (tan^2 beta C^2 + m cos^2 tau) / (1 + C),
+///                          cos^2 tau + (b/a)^2 C sin^2 tau),
+/// a sum of two non-negative terms (checked against 30-digit quadrature to 1e-30 while deriving it;
+/// in the tests against the tables of tools/gen_maps_reference.py).
+///
+/// **Parallel** (§5). The half-area between the slices 0 and psi (0 <= psi <= beta) is split into
+/// the radial sector from the centre to the boundary point P where slice psi meets the ellipse,
+/// plus the geodesic triangle (centre, P, M = (0, sin psi, cos psi)) (*derived*: the sector lies
+/// between the slices because the ellipse is convex and the slice angle grows along its boundary):
+///     I(psi) = 2 [Omega_r(tau_P) + E(triangle)],  E = 2 atan2(a sqrt(S) sin psi, N (1 + C + cos psi) + b cos alpha)
+/// (Van Oosterom–Strackee), S = sin(beta − psi) sin(beta + psi), N^2 = b^2 cos^2 alpha + a^2 S,
+/// P = (a sqrt(S), b cos alpha sin psi, b cos alpha cos psi)/N, so x_max(psi) = a sqrt(S)/N and
+/// C = b cos alpha cos psi / N. Every term is non-negative: no cancellation, also where the
+/// Legendre/Carlson form of MATH.md §5 loses digits (nearly hemispherical ellipses). The parallel
+/// map solves for the distance e = beta − psi to the end of the minor axis, so sin(beta − psi) is
+/// exact near the end where the slice shrinks to a point.
+
+#include <cmath>
+
+#include "../config.hpp"
+#include "../elliptic.hpp"
+#include "../math.hpp"
+#include "../spherical_ellipse.hpp"
+
+/// Device code: the closed forms (each with an inlined R_J) are kept out of line, so a kernel
+/// holds one copy of each however many samplers it calls (ptxas time and memory grow quickly with
+/// the size of a kernel).
+#if defined(__CUDACC__)
+#define APSE_DETAIL_NOINLINE __noinline__
+#else
+#define APSE_DETAIL_NOINLINE
+#endif
+
+namespace apse {
+namespace detail {
+
+/// e.solid_angle() (one R_J), kept out of line in device code (see APSE_DETAIL_NOINLINE).
+template <class T> APSE_DETAIL_NOINLINE APSE_FUNC T solid_angle_of(const SphericalEllipse<T>& e) noexcept {
+    return e.solid_angle();
+}
+
+/// The radial map's state at one tau in [0, pi/2]: the boundary point and the area density.
+template <class T> struct RadialPoint {
+    T tau;      ///< orthographic eccentric anomaly
+    T ct, st;   ///< cos tau, sin tau (both >= 0)
+    T c_max;    ///< cos theta_max = C(tau)
+    T density;  ///< dOmega_r/dtau = a b / (1 + C)
+    T slope;    ///< d density / dtau
+};
+
+/// The parallel map's state at one e = beta − psi in [0, beta].
+template <class T> struct ParallelPoint {
+    T e;                ///< distance (radians) from the end of the minor axis
+    T sin_psi, cos_psi; ///< the slice angle psi = beta − e
+    T x_max;            ///< half-width of the slice: sin of its half-arc, a sqrt(S)/N
+    T ct, st, c_max;    ///< the boundary point P in tau form (for the radial sector)
+    T root_s, n;        ///< sqrt(S) and N
+    T density;          ///< d(edge area)/de = 2 x_max
+    T slope;            ///< d density / de
+};
+
+/// Per-ellipse constants of the cumulative areas (set-up: no transcendental call but the one R_J
+/// of the solid angle, done by the caller).
+template <class T> struct EllipseAreas {
+    T a, b;          ///< sin alpha, sin beta
+    T ca, cb;        ///< cos alpha, cos beta
+    T ca2, cb2;      ///< their squares
+    T a2, b2, ab;    ///< a^2, b^2, a b
+    T a2_minus_b2;   ///< a^2 − b^2 = cos^2 beta − cos^2 alpha, no cancellation
+    T tb2;           ///< tan^2 beta
+    T m;             ///< the elliptic parameter (tan^2 alpha − tan^2 beta)/(1 + tan^2 alpha)
+    T k1;            ///< a b cos^2 beta / (3 cos alpha)
+    T cb_over_ca2;   ///< (cos beta / cos alpha)^2
+    T b_ca;          ///< b cos alpha
+    T ba, ba2;       ///< b / a and its square
+
+    static APSE_FUNC EllipseAreas make(const SphericalEllipse<T>& e) noexcept {
+        EllipseAreas k;
+        k.a = e.sin_alpha;
+        k.b = e.sin_beta;
+        k.ca = e.cos_alpha;
+        k.cb = e.cos_beta;
+        k.ca2 = k.ca * k.ca;
+        k.cb2 = k.cb * k.cb;
+        k.a2 = k.a * k.a;
+        k.b2 = k.b * k.b;
+        k.ab = k.a * k.b;
+        k.a2_minus_b2 = (k.a - k.b) * (k.a + k.b);
+        k.tb2 = e.tan_beta * e.tan_beta;
+        k.m = e.m;
+        k.k1 = k.ab * k.cb2 / (T(3) * k.ca);
+        k.cb_over_ca2 = sqr(k.cb / k.ca);
+        k.b_ca = k.b * k.ca;
+        k.ba = k.a > T(0) ? k.b / k.a : T(0);
+        k.ba2 = k.ba * k.ba;
+        return k;
+    }
+
+    /// Omega_r at the boundary point (ct, st, C) = (cos tau, sin tau, C(tau)), tau in [0, pi/2]:
+    /// the area of the part of the ellipse with azimuth in [0, phi(tau)] (file comment).
+    /// Relative accuracy a few eps (R_J's and atan2's) for every ellipse.
+    APSE_DETAIL_NOINLINE APSE_FUNC T radial_area(T ct, T st, T c) const noexcept {
+        if (!(st > T(0))) return T(0);
+        // R_J(ca² ct², ca², C², ca²(ct² + cb² st²)) = ca^-3 R_J(ct², 1, C²/ca², ct² + cb² st²)
+        // (homogeneity; the scaled form neither underflows nor overflows for any ellipse).
+        const T ct2 = ct * ct, st2 = st * st, c2 = c * c;
+        const T rj = carlson_rj(ct2, T(1), ct2 + cb_over_ca2 * st2, ct2 + cb2 * st2);
+        const T term1 = k1 * st * st2 * rj;
+        // (both atan2 arguments divided by a^2, so that tiny ellipses do not underflow)
+        const T term2 = std::atan2(ba * st * ct * (tb2 * c2 + m * ct2) / (T(1) + c), ct2 + ba2 * c * st2);
+        return term1 + term2;
+    }
+
+    /// C(tau) = cos theta_max from (cos tau, sin tau).
+    APSE_FUNC T c_max(T ct, T st) const noexcept { return std::sqrt(ca2 * ct * ct + cb2 * st * st); }
+
+    /// The radial state at tau with known cos tau, sin tau (>= 0).
+    APSE_FUNC RadialPoint<T> radial_point(T tau, T ct, T st) const noexcept {
+        RadialPoint<T> p;
+        p.tau = tau;
+        p.ct = ct;
+        p.st = st;
+        p.c_max = c_max(ct, st);
+        const T one_plus_c = T(1) + p.c_max;
+        p.density = ab / one_plus_c;
+        // dC/dtau = (a^2 − b^2) sin tau cos tau / C; C >= cos alpha > 0 for a non-empty ellipse.
+        const T dc = p.c_max > T(0) ? a2_minus_b2 * st * ct / p.c_max : T(0);
+        p.slope = -p.density * dc / one_plus_c;
+        return p;
+    }
+
+    /// The radial state at tau in [0, pi/2] (one sin/cos).
+    APSE_FUNC RadialPoint<T> radial_point(T tau) const noexcept {
+        // float(pi/2) exceeds pi/2, so its cosine is slightly negative: clamp.
+        return radial_point(tau, max_of(std::cos(tau), T(0)), max_of(std::sin(tau), T(0)));
+    }
+
+    /// The parallel state at e = beta − psi in [0, beta], from sin e, cos e and the ellipse's
+    /// sin beta = b, cos beta = cb (angle differences without cancellation near the end).
+    APSE_FUNC ParallelPoint<T> parallel_point(T e, T se, T ce) const noexcept {
+        ParallelPoint<T> p;
+        p.e = e;
+        p.sin_psi = max_of(b * ce - cb * se, T(0));      // sin(beta − e); psi >= 0
+        p.cos_psi = cb * ce + b * se;                    // cos(beta − e), positive terms
+        const T s = se * (b * p.cos_psi + cb * p.sin_psi);  // sin(beta − psi) sin(beta + psi)
+        p.root_s = std::sqrt(max_of(s, T(0)));
+        // N = |(b cos alpha, a sqrt(S))|, scaled so that neither square underflows
+        const T n1 = b_ca, n2 = a * p.root_s, nm = max_of(n1, n2);
+        p.n = nm > T(0) ? nm * std::sqrt(sqr(n1 / nm) + sqr(n2 / nm)) : T(0);
+        const T inv_n = T(1) / p.n;
+        p.x_max = a * p.root_s * inv_n;
+        p.ct = p.root_s * inv_n;
+        p.st = ca * p.sin_psi * inv_n;
+        p.c_max = b_ca * p.cos_psi * inv_n;
+        p.density = T(2) * p.x_max;
+        // d x_max/dpsi = −(a b cos alpha / N^2)^2 sin psi cos psi / x_max; d/de = −d/dpsi.
+        const T t = (a * inv_n) * (b_ca * inv_n);  // O(1) for every size (no under/overflow)
+        p.slope = p.x_max > T(0) ? T(2) * t * t * p.sin_psi * p.cos_psi / p.x_max : T(0);
+        return p;
+    }
+
+    /// The parallel state at e in [0, beta] (one sin/cos).
+    APSE_FUNC ParallelPoint<T> parallel_point(T e) const noexcept {
+        return parallel_point(e, max_of(std::sin(e), T(0)), std::cos(e));
+    }
+
+    /// Half-area I(psi) between the slices 0 and psi = beta − e (file comment): the radial sector
+    /// to the boundary point plus the geodesic triangle, doubled. Relative accuracy a few eps.
+    APSE_DETAIL_NOINLINE APSE_FUNC T parallel_half_area(const ParallelPoint<T>& p) const noexcept {
+        const T sector = radial_area(p.ct, p.st, p.c_max);
+        // (both atan2 arguments divided by N, so that tiny ellipses do not underflow)
+        const T inv_n = T(1) / p.n;
+        const T triangle = T(2) * std::atan2((a * inv_n) * p.root_s * p.sin_psi,
+                                             (T(1) + p.c_max + p.cos_psi) + b_ca * inv_n);
+        return T(2) * (sector + triangle);
+    }
+};
+
+/// The radial quadrant area as a model for invert_area: variable tau in [0, pi/2]. The density
+/// a b/(1 + C(tau)) is singular only where C = 0, at tau = ±i atanh(cos alpha / cos beta) (and
+/// their images under tau → pi − tau), so rho(tau)^2 = tau^2 + atanh(.)^2, capped at 1.
+template <class T> struct RadialAreaModel {
+    using Point = RadialPoint<T>;
+    const EllipseAreas<T>* k;
+    T singular_im2;  ///< atanh(cos alpha / cos beta)^2, capped at 1
+    APSE_FUNC Point point(T tau) const noexcept { return k->radial_point(tau); }
+    APSE_FUNC T area(const Point& p) const noexcept { return k->radial_area(p.ct, p.st, p.c_max); }
+    APSE_FUNC T variable(const Point& p) const noexcept { return p.tau; }
+    APSE_FUNC T radius_sq(T tau) const noexcept { return min_of(T(1), tau * tau + singular_im2); }
+
+    /// atanh(cos alpha / cos beta)^2 capped at 1 (the set-up's one logarithm, skipped when the
+    /// ratio exceeds tanh(1), i.e. when the cap applies anyway).
+    static APSE_FUNC T singular_distance_sq(const EllipseAreas<T>& k) noexcept {
+        const T r = k.ca / k.cb;
+        if (!(r < T(0.7615941559557649))) return T(1);
+        const T at = T(0.5) * std::log((T(1) + r) / (T(1) - r));
+        return min_of(T(1), at * at);
+    }
+};
+
+/// The parallel map's edge area J(e) = Omega/2 − I(beta − e) (the part of one half of the ellipse
+/// beyond the slice psi = beta − e) as a model for invert_area: variable e in [0, beta], density
+/// 2 x_max, singular (square root) at e = 0, so rho(e) = e.
+template <class T> struct ParallelAreaModel {
+    using Point = ParallelPoint<T>;
+    const EllipseAreas<T>* k;
+    T half;  ///< Omega / 2
+    APSE_FUNC Point point(T e) const noexcept { return k->parallel_point(e); }
+    APSE_FUNC T area(const Point& p) const noexcept { return half - k->parallel_half_area(p); }
+    APSE_FUNC T variable(const Point& p) const noexcept { return p.e; }
+    APSE_FUNC T radius_sq(T e) const noexcept { return e * e; }
+};
+
+}  // namespace detail
+}  // namespace apse

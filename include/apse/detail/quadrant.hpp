@@ -1,0 +1,92 @@
+// apse — area-preserving parameterizations for spherical ellipses.
+// SPDX-License-Identifier: MIT
+#pragma once
+
+/// @file detail/quadrant.hpp
+/// The symmetry bookkeeping shared by the radial, LD-radial and parallel maps (MATH.md §4–5):
+/// every map solves its cumulative-area equation on one quadrant (radial) or one half (parallel)
+/// of the ellipse and reaches the others by reflection. Written once here:
+///
+/// * `clamp_unit` — the input policy for points of the square (NaN is reported, finite values
+///   are clamped into [0, 1]);
+/// * `fold_quadrant` / `unfold_quadrant_fraction` — u1 in [0, 1] ↔ (quadrant q, fraction f of
+///   that quadrant's area measured from the major axis), reflected in odd quadrants so the map
+///   is continuous across quadrant boundaries;
+/// * `quadrant_of` / `place_in_quadrant` — a local direction ↔ (quadrant, |x|, |y|);
+/// * `fold_half` / `unfold_half_fraction` — u1 in [0, 1] ↔ (side ±1 of the major axis, fraction
+///   of that half's area measured from the minor-axis end), the parallel map's symmetry.
+
+#include "../config.hpp"
+#include "../math.hpp"
+#include "glm.hpp"
+
+namespace apse {
+namespace detail {
+
+/// x clamped to [0, 1]; `ok` is cleared when x is NaN (the caller then reports "no sample").
+template <class T> APSE_FUNC T clamp_unit(T x, bool& ok) noexcept {
+    if (is_nan(x)) ok = false;
+    return clamp(x, T(0), T(1));
+}
+
+/// A point of [0, 1] folded onto one quadrant.
+template <class T> struct QuadrantFold {
+    int quadrant;  ///< 0..3, counter-clockwise from the +x (major) axis
+    T fraction;    ///< fraction of the quadrant's area, measured from the major axis, in [0, 1]
+};
+
+/// u1 in [0, 1] → quadrant q = floor(4 u1) (u1 = 1 belongs to quadrant 3) and the fraction
+/// f = 4 u1 − q, reflected (1 − f) in the odd quadrants: f is then always measured from the major
+/// axis, and azimuth = q pi/2 + phi0 (q even) or (q + 1) pi/2 − phi0 (q odd) is continuous in u1.
+/// Exact in floating point (4 u1 and 4 u1 − q are exact; 1 − f is exact for f in [1/2, 1] and
+/// correctly rounded otherwise).
+template <class T> APSE_FUNC QuadrantFold<T> fold_quadrant(T u1) noexcept {
+    const T s = T(4) * u1;
+    int q = s >= T(3) ? 3 : (s >= T(2) ? 2 : (s >= T(1) ? 1 : 0));
+    T f = s - T(q);
+    if (q & 1) f = T(1) - f;
+    return {q, clamp(f, T(0), T(1))};
+}
+
+/// Inverse of fold_quadrant: (q, f) → u1 = (q + f)/4 (q even) or (q + 1 − f)/4 (q odd).
+template <class T> APSE_FUNC T unfold_quadrant_fraction(int q, T f) noexcept {
+    return ((q & 1) ? (T(q + 1) - f) : (T(q) + f)) * T(0.25);
+}
+
+/// Maps a first-quadrant local (x >= 0, y >= 0) onto quadrant q by the reflections
+/// (x, y) → (±x, ±y): q = 0 (+,+), 1 (−,+), 2 (−,−), 3 (+,−). Exact.
+template <class T> APSE_FUNC glm::vec<3, T> place_in_quadrant(int q, T x, T y, T z) noexcept {
+    return glm::vec<3, T>((q == 1 || q == 2) ? -x : x, (q >= 2) ? -y : y, z);
+}
+
+/// Quadrant of a local direction (the inverse of place_in_quadrant): q such that
+/// place_in_quadrant(q, |x|, |y|, z) gives back (x, y, z). Points on the axes go to the quadrant
+/// for which the fraction is 0 or 1 consistently with fold_quadrant (+x axis → q = 0 with f = 0,
+/// +y → q = 0 with f = 1, −x → q = 1 with f = 0, −y → q = 2 with f = 1: the same u1
+/// as the neighbouring quadrant would give).
+template <class T> APSE_FUNC int quadrant_of(T x, T y) noexcept {
+    if (y >= T(0)) return (x >= T(0)) ? 0 : 1;
+    return (x > T(0)) ? 3 : 2;
+}
+
+/// A point of [0, 1] folded onto one half of the ellipse (sides of the major axis).
+template <class T> struct HalfFold {
+    T side;      ///< −1 (u1 < 1/2: y < 0) or +1
+    T fraction;  ///< fraction of the half's area measured from the minor-axis end, in [0, 1]
+};
+
+/// u1 in [0, 1] → side and edge fraction g: u1 < 1/2 → (−1, 2 u1); else (+1, 2 − 2 u1). Exact
+/// (both products and the difference, by Sterbenz, are exact): g = 0 at the ends of the minor
+/// axis (u1 = 0, 1), g = 1 on the major axis (u1 = 1/2).
+template <class T> APSE_FUNC HalfFold<T> fold_half(T u1) noexcept {
+    if (u1 < T(0.5)) return {T(-1), clamp(T(2) * u1, T(0), T(1))};
+    return {T(1), clamp(T(2) - T(2) * u1, T(0), T(1))};
+}
+
+/// Inverse of fold_half: (side, g) → u1 = g/2 (side < 0) or 1 − g/2.
+template <class T> APSE_FUNC T unfold_half_fraction(T side, T g) noexcept {
+    return side < T(0) ? T(0.5) * g : T(1) - T(0.5) * g;
+}
+
+}  // namespace detail
+}  // namespace apse

@@ -1,0 +1,149 @@
+// apse — area-preserving parameterizations for spherical ellipses.
+// SPDX-License-Identifier: MIT
+#pragma once
+
+/// @file disk_light.hpp
+/// The one-call convenience a renderer wants for a disk light: project the disk seen from the
+/// shading point to its spherical ellipse (projection.hpp, MATH.md §2), sample it with one of the
+/// area-preserving maps (maps/*.hpp, MATH.md §4–5), and return the direction, the point on the
+/// disk, its distance and the pdf in solid angle; plus the pdf of any direction (for MIS).
+///
+///     // per shading point o, for each of n stratified points u:
+///     apse::DiskLight<float> light(o, center, normal, radius, apse::DiskMap::ld_radial);
+///     auto s = light.sample(u);            // s.pdf == 0: no sample (skip it)
+///     if (s.pdf > 0 && visible(o, s.point)) L += Le * f(s.direction) / s.pdf;
+///     // MIS: the light's density of a BSDF-sampled direction w
+///     float p_light = light.pdf(w);        // or apse::disk_light_pdf(o, center, normal, radius, w)
+///
+/// The geometry is two-sided (the disk seen from behind gives the same ellipse); one-sided
+/// emitters cull with `disk_faces(o, center, normal)` first.
+
+#include <cmath>
+
+#include "config.hpp"
+#include "math.hpp"
+#include "projection.hpp"
+#include "sample.hpp"
+#include "spherical_ellipse.hpp"
+#include "detail/glm.hpp"
+#include "maps/ld_radial.hpp"
+#include "maps/parallel.hpp"
+#include "maps/radial.hpp"
+#include "detail/cumulative_area.hpp"
+
+namespace apse {
+
+/// Which area-preserving map a DiskLight uses (all three give the same, uniform, density; they
+/// differ in how they distort the square and so in how well they keep stratification).
+enum class DiskMap {
+    radial,     ///< RadialMap (MATH.md §4)
+    ld_radial,  ///< LdRadialMap: continuous on the whole square; the default
+    parallel,   ///< ParallelMap (MATH.md §5)
+};
+
+/// One sample of a disk light.
+template <class T> struct DiskLightSample {
+    glm::vec<3, T> direction;  ///< world-space unit direction from o towards the disk
+    glm::vec<3, T> point;      ///< the point of the disk hit along `direction`
+    T distance;                ///< |point − o|
+    T pdf;                     ///< density in solid angle (1/Omega); 0 marks "no sample"
+};
+
+/// A disk light seen from one shading point, ready to sample with one of the maps (the set-up
+/// — projection, solid angle — is done once in the constructor; sample() as often as needed).
+/// Trivially copyable.
+template <class T> class DiskLight {
+public:
+    using vec2 = glm::vec<2, T>;
+    using vec3 = glm::vec<3, T>;
+
+    /// Disk {p : (p − center)·normal = 0, |p − center| <= radius} seen from `o`; `normal` need
+    /// not be unit. Degenerate or invalid input (see project_disk: o in the disk's plane,
+    /// radius <= 0, NaN/Inf, lights subtending less than ~1e-19 sr in float / 1e-153 in double)
+    /// gives a light whose samples all have pdf 0.
+    APSE_FUNC DiskLight(const vec3& o, const vec3& center, const vec3& normal, T radius,
+                        DiskMap map = DiskMap::ld_radial) noexcept
+        : DiskLight(o, center, normal, map, project_disk(o, center, normal, radius)) {}
+
+    /// The disk's spherical ellipse.
+    APSE_FUNC const SphericalEllipse<T>& ellipse() const noexcept {
+        return map_ == DiskMap::parallel ? parallel_.ellipse() : ld_.ellipse();
+    }
+
+    /// Solid angle of the disk seen from o (steradians, two-sided); 0 for degenerate input.
+    APSE_FUNC T solid_angle() const noexcept {
+        return map_ == DiskMap::parallel ? parallel_.solid_angle() : ld_.solid_angle();
+    }
+
+    /// Sample for the point u of the unit square (clamped into [0, 1]^2; NaN → pdf 0): the
+    /// direction (uniform in solid angle over the disk), the point of the disk along it, its
+    /// distance and pdf = 1/Omega. pdf 0 ("no sample", finite direction and point = o) for a
+    /// degenerate light, a NaN u, when rounding leaves the ray parallel to the disk's plane, or
+    /// when the hit point overflows T.
+    APSE_FUNC DiskLightSample<T> sample(const vec2& u) const noexcept {
+        DirectionSample<T> s;
+        if (map_ == DiskMap::parallel) s = parallel_.sample(u);
+        else if (map_ == DiskMap::radial) s = ld_.radial().sample(u);
+        else s = ld_.sample(u);
+        DiskLightSample<T> r{s.direction, o_, T(0), T(0)};
+        if (!(s.pdf > T(0))) return r;
+        const T t = glm::dot(center_ - o_, normal_) / glm::dot(s.direction, normal_);
+        if (!(t > T(0)) || !is_finite(t)) return r;
+        const vec3 p = o_ + t * s.direction;
+        if (!is_finite(p.x + p.y + p.z)) return r;  // beyond T's range
+        r.point = p;
+        r.distance = t;
+        r.pdf = s.pdf;
+        return r;
+    }
+
+    /// Density of sample() at the world-space direction `w` (any non-zero length), in solid
+    /// angle: 1/Omega if the ray from o along w hits the disk (boundary included), else 0.
+    APSE_FUNC T pdf(const vec3& w) const noexcept {
+        return map_ == DiskMap::parallel ? parallel_.pdf(w) : ld_.pdf(w);
+    }
+
+    /// The point of the unit square whose sample has direction `w` (the map's inverse; see
+    /// RadialMap / LdRadialMap / ParallelMap::invert for the behaviour outside the disk).
+    APSE_FUNC vec2 invert(const vec3& w) const noexcept {
+        if (map_ == DiskMap::parallel) return parallel_.invert(w);
+        if (map_ == DiskMap::radial) return ld_.radial().invert(w);
+        return ld_.invert(w);
+    }
+
+private:
+    // Only the chosen map is set up (the other one is built on the empty ellipse: no R_J).
+    APSE_FUNC DiskLight(const vec3& o, const vec3& center, const vec3& normal, DiskMap map,
+                        const SphericalEllipse<T>& e) noexcept
+        : o_(o), center_(center), normal_(normal), map_(map),
+          ld_(map == DiskMap::parallel ? SphericalEllipse<T>::make_empty() : e),
+          parallel_(map == DiskMap::parallel ? e : SphericalEllipse<T>::make_empty()) {}
+
+    vec3 o_, center_, normal_;
+    DiskMap map_;
+    LdRadialMap<T> ld_;        // radial (ld_.radial()) and LD-radial
+    ParallelMap<T> parallel_;  // parallel
+};
+
+/// One sample of the disk light (center, normal, radius) seen from o, with the chosen map, for
+/// the point u of the unit square: DiskLight(o, center, normal, radius, map).sample(u).
+template <class T>
+APSE_FUNC DiskLightSample<T> sample_disk_light(const glm::vec<3, T>& o, const glm::vec<3, T>& center,
+                                               const glm::vec<3, T>& normal, T radius, DiskMap map,
+                                               const glm::vec<2, T>& u) noexcept {
+    return DiskLight<T>(o, center, normal, radius, map).sample(u);
+}
+
+/// Density in solid angle with which every map samples the direction w from o: 1/Omega of the
+/// disk's spherical ellipse if the ray o + t w (t > 0) hits the disk, else 0 (also for
+/// degenerate input). One projection and one R_J: use it for MIS weights of BSDF samples.
+template <class T>
+APSE_FUNC T disk_light_pdf(const glm::vec<3, T>& o, const glm::vec<3, T>& center,
+                           const glm::vec<3, T>& normal, T radius, const glm::vec<3, T>& w) noexcept {
+    const SphericalEllipse<T> e = project_disk(o, center, normal, radius);
+    if (!e.contains(w)) return T(0);
+    const T omega = detail::solid_angle_of(e);
+    return omega > T(0) ? T(1) / omega : T(0);
+}
+
+}  // namespace apse

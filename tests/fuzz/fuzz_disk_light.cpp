@@ -1,0 +1,95 @@
+// libFuzzer target: arbitrary geometry (shading point, disk centre, normal, radius), map choice
+// and point of the square, in float and double, through disk_light.hpp. Checks what the library
+// promises for every input: a finite unit direction, a finite pdf >= 0, and for pdf > 0 a
+// direction inside the disk's spherical ellipse (rounding-aware test), a finite point at a
+// finite positive distance, an inverse inside the square, and finite MIS pdfs. Any violation
+// aborts (libFuzzer reports it with the input).
+//
+// Build: clang++ -fsanitize=fuzzer,address,undefined (tests/CMakeLists.txt, APSE_BUILD_FUZZERS).
+#include <apse/disk_light.hpp>
+
+#include <fuzzer/FuzzedDataProvider.h>
+
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+
+namespace {
+
+const double* g_input = nullptr;  // the geometry being checked (printed on failure)
+double g_u[2];
+
+[[noreturn]] void fail(const char* what) {
+    std::fprintf(stderr, "fuzz_disk_light: %s\n", what);
+    if (g_input)
+        for (int i = 0; i < 10; ++i) std::fprintf(stderr, "  g[%d] = %.17g\n", i, g_input[i]);
+    std::fprintf(stderr, "  u = %.17g %.17g\n", g_u[0], g_u[1]);
+    std::abort();
+}
+
+template <class T> bool finite3(const glm::vec<3, T>& v) {
+    return apse::is_finite(v.x) && apse::is_finite(v.y) && apse::is_finite(v.z);
+}
+
+/// A value: either raw bits (any double, NaN/Inf/denormal/huge included) or, more often, a
+/// "plausible" value: mantissa in [-1, 1] times a power of ten in [1e-12, 1e12], or small integers.
+double value(FuzzedDataProvider& in) {
+    switch (in.ConsumeIntegralInRange<int>(0, 3)) {
+        case 0: return in.ConsumeFloatingPoint<double>();
+        case 1: return double(in.ConsumeIntegralInRange<int>(-4, 4));
+        default: {
+            const double m = in.ConsumeFloatingPointInRange<double>(-1.0, 1.0);
+            return m * std::pow(10.0, in.ConsumeIntegralInRange<int>(-12, 12));
+        }
+    }
+}
+
+template <class T> void check(const double* g, apse::DiskMap map, T u1, T u2) {
+    using V = glm::vec<3, T>;
+    const V o{T(g[0]), T(g[1]), T(g[2])}, c{T(g[3]), T(g[4]), T(g[5])}, n{T(g[6]), T(g[7]), T(g[8])};
+    const T r = T(g[9]);
+    const apse::DiskLight<T> light(o, c, n, r, map);
+    const apse::DiskLightSample<T> s = light.sample(glm::vec<2, T>(u1, u2));
+    if (!finite3(s.direction)) fail("non-finite direction");
+    if (!apse::is_finite(s.pdf) || !(s.pdf >= T(0))) fail("pdf not finite and >= 0");
+    const T omega = light.solid_angle();
+    if (!apse::is_finite(omega) || !(omega >= T(0)) || omega > T(6.2832)) fail("solid angle out of [0, 2 pi]");
+    if (!(s.pdf > T(0))) return;
+    const double len = glm::length(glm::dvec3(s.direction));
+    if (std::fabs(len - 1) > 64 * double(apse::epsilon<T>())) fail("direction not unit");
+    if (!finite3(s.point) || !apse::is_finite(s.distance) || !(s.distance > T(0))) fail("bad point / distance");
+    // inside the ellipse up to rounding: shrink |x|, |y| and grow z by d = 64 eps (the frame's and
+    // the local direction's rounding, absolute for unit vectors)
+    const apse::SphericalEllipse<T>& e = light.ellipse();
+    const glm::dvec3 w(s.direction);
+    const glm::dvec3 l(glm::dot(w, glm::dvec3(e.x)), glm::dot(w, glm::dvec3(e.y)), glm::dot(w, glm::dvec3(e.z)));
+    const double d = 64 * double(apse::epsilon<T>());
+    const double x = std::fmax(std::fabs(l.x) - d, 0) / double(e.tan_alpha);
+    const double y = std::fmax(std::fabs(l.y) - d, 0) / double(e.tan_beta);
+    const double z = l.z + d;
+    if (!(z > 0) || x * x + y * y > z * z) fail("sample outside the ellipse");
+    const glm::vec<2, T> back = light.invert(s.direction);
+    if (!(back.x >= T(0) && back.x <= T(1) && back.y >= T(0) && back.y <= T(1))) fail("inverse outside the square");
+    const T p1 = light.pdf(s.direction), p2 = apse::disk_light_pdf(o, c, n, r, s.direction);
+    if (!apse::is_finite(p1) || !(p1 >= T(0)) || !apse::is_finite(p2) || !(p2 >= T(0))) fail("bad MIS pdf");
+}
+
+}  // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+    FuzzedDataProvider in(data, size);
+    double g[10];
+    for (double& v : g) v = value(in);
+    const apse::DiskMap maps[] = {apse::DiskMap::radial, apse::DiskMap::ld_radial, apse::DiskMap::parallel};
+    const apse::DiskMap map = maps[in.ConsumeIntegralInRange<int>(0, 2)];
+    double u1 = in.ConsumeProbability<double>(), u2 = in.ConsumeProbability<double>();
+    if (in.ConsumeBool()) u1 = value(in);  // sometimes out of [0, 1], NaN or infinite
+    if (in.ConsumeBool()) u2 = value(in);
+    g_input = g;
+    g_u[0] = u1;
+    g_u[1] = u2;
+    check<float>(g, map, float(u1), float(u2));
+    check<double>(g, map, u1, u2);
+    return 0;
+}
