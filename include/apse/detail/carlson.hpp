@@ -1,0 +1,473 @@
+// apse — area-preserving parameterizations for spherical ellipses.
+// SPDX-License-Identifier: MIT
+#pragma once
+
+/// @file detail/carlson.hpp
+/// Private kernels behind elliptic.hpp: Carlson's R_F, R_D, R_J (and a fused R_F + R_J of one
+/// argument triple) and R_C. Callers have already checked the domain: these functions assume
+/// valid, finite arguments.
+///
+/// Duplication (Carlson 1995, "Numerical computation of real or complex elliptic integrals",
+/// Numer. Algorithms 10; DLMF 19.26.18, 19.36): a step maps every argument v to (v + lambda)/4,
+/// lambda = sqrt(x y) + sqrt(y z) + sqrt(z x); it leaves R_F unchanged (R_D, R_J up to an
+/// explicit term) and divides every difference between arguments by exactly 4. With A the
+/// weighted mean of the arguments, the relative deviations X_i = (A - v_i)/A after n steps are
+/// 4^-n (A_0 - v_i)/A_n; once they are below a tolerance, the rest is the Taylor series of R
+/// about (A, A, A) in the elementary symmetric functions E2..E5 of the X_i (DLMF 19.36.1-2),
+/// here to total degree 9 (Carlson stops at 5, DLMF lists 7). Its truncation error is below
+/// eps/8 at the tolerances below (measured at 30 digits over all directions), which are 2.6x
+/// (R_F) and 2.7x (R_J) larger than for degree 7: ~0.7 duplication steps fewer. (Degree 11 saves
+/// another 0.4 step but measured no faster: 37 terms for R_J.)
+///
+/// Complete integrals (one argument zero) use the arithmetic-geometric mean instead: one square
+/// root per step and quadratic convergence (agm_core).
+///
+/// Speed on x86-64 (see docs/elliptic.md) is bound by the square-root unit: a duplication step
+/// needs three roots (four for R_J) whose latency chains into the next step, and the unit takes a
+/// new double root only every ~8 cycles; sqrt2 pairs them in one SSE2 instruction. Branches whose
+/// outcome depends on the chain (loop exits, rc1's cases) are kept few: a mispredicted one
+/// discards the duplication steps already in flight behind it.
+
+#include <cmath>
+
+#include "../config.hpp"
+#include "../math.hpp"
+
+// In CUDA device code the large kernels below are compiled once and called, not inlined into
+// every call site: inlined, each public elliptic function expands to tens of kilobytes of PTX
+// (several AGM and duplication variants, atan/log1p), which made kernels calling many of them
+// slow to assemble. On the host the compiler decides as usual.
+#if defined(__CUDA_ARCH__)
+#define APSE_CARLSON_NOINLINE __noinline__
+#else
+#define APSE_CARLSON_NOINLINE
+#endif
+
+// SSE2 (every x86-64 host compiler; not in CUDA device code): see sqrt2.
+#if (defined(__SSE2__) || defined(_M_X64)) && !defined(__CUDA_ARCH__)
+#include <emmintrin.h>
+#define APSE_CARLSON_SSE2 1
+#else
+#define APSE_CARLSON_SSE2 0
+#endif
+
+namespace apse {
+namespace detail {
+
+/// Hard cap on duplication steps. Valid inputs need at most ~16 (double, arguments spanning
+/// the whole exponent range); the cap only bounds the work for inputs that are not.
+constexpr int carlson_max_steps = 64;
+
+/// Stopping tolerance on max |X_i| for R_F: (eps / (8 C))^(1/10), C = 0.0129 the largest
+/// coefficient of the degree-10 truncation error (maximised numerically over all directions,
+/// +10%). At exactly this tolerance the truncation error measures 0.10 eps (float and double).
+template <class T> APSE_FUNC constexpr T rf_tolerance() noexcept {
+    return sizeof(T) == sizeof(float) ? T(0.25) : T(0.034);
+}
+/// Stopping tolerance on max |X_i| for R_J and R_D: (eps / (8 C))^(1/10), C = 0.14 (measured
+/// truncation error at the tolerance: 0.10 eps).
+template <class T> APSE_FUNC constexpr T rj_tolerance() noexcept {
+    return sizeof(T) == sizeof(float) ? T(0.2) : T(0.0268);
+}
+
+/// max |a - v| over four values (pass a value twice when there are three).
+template <class T> APSE_FUNC T max_deviation(T a, T v0, T v1, T v2, T v3) noexcept {
+    return max_of(max_of(std::fabs(a - v0), std::fabs(a - v1)),
+                  max_of(std::fabs(a - v2), std::fabs(a - v3)));
+}
+
+/// Degree-9 Taylor series of sqrt(A) R_F in E2 = XY - Z^2, E3 = XYZ (X + Y + Z = 0): DLMF 19.36.1
+/// to degree 7; the degree 8-9 terms were derived from the series of the integrand,
+/// R_F(1-X, 1-Y, 1-Z) = sum_N T_N / (2N + 1), T_N = sum_{i+j+k=N} c_i c_j c_k X^i Y^j Z^k,
+/// c_i = (1/2)_i / i!.
+template <class T> APSE_FUNC T rf_series(T e2, T e3) noexcept {
+    // grouped for a short dependency chain (Estrin-like), same terms
+    const T e22 = e2 * e2;
+    const T p0 = e2 * (T(-1) / T(10) + e2 * (T(1) / T(24))) +
+                 e22 * e2 * (T(-5) / T(208) + e2 * (T(35) / T(2176)));
+    const T p1 = (T(1) / T(14) + e2 * (T(-3) / T(44))) + e22 * (T(1) / T(16) + e2 * (T(-35) / T(608)));
+    const T p2 = T(3) / T(104) + e2 * (T(-15) / T(272)) + e3 * (T(5) / T(304));
+    return T(1) + (p0 + e3 * (p1 + e3 * p2));
+}
+
+/// Degree-9 Taylor series of A^(3/2) R_J in the elementary symmetric functions E2..E5 of
+/// (X, Y, Z, P, P), X + Y + Z + 2P = 0: DLMF 19.36.2 to degree 7; the degree 8-9 terms derived
+/// as for R_F (R_J(1-X, 1-Y, 1-Z, 1-P) = sum_N 3 T_N / (2N + 3), the P factor's c_i = 1).
+template <class T> APSE_FUNC T rj_series(T e2, T e3, T e4, T e5) noexcept {
+    const T c0 = e3 * (T(1) / T(6) + e3 * (T(3) / T(40) + e3 * (T(5) / T(112))) +
+                       e4 * (T(-9) / T(68)) + e5 * (T(9) / T(76))) +
+                 e4 * (T(-3) / T(22) + e4 * (T(9) / T(152)) + e5 * (T(-3) / T(28))) +
+                 e5 * (T(3) / T(26));
+    const T c1 = T(-3) / T(14) + e3 * (T(-9) / T(52) + e3 * (T(-45) / T(304)) + e4 * (T(15) / T(56))) +
+                 e4 * (T(3) / T(20)) + e5 * (T(-9) / T(68));
+    const T c2 = T(9) / T(88) + e3 * (T(45) / T(272)) + e4 * (T(-45) / T(304)) + e5 * (T(15) / T(112));
+    const T c3 = T(-1) / T(16) + e3 * (T(-5) / T(32));
+    const T c4 = T(105) / T(2432);
+    const T e22 = e2 * e2;
+    return T(1) + ((c0 + e2 * c1) + e22 * ((c2 + e2 * c3) + e22 * c4));
+}
+
+/// The series of R_J/R_D from the scaled deviations X, Y, Z, P.
+template <class T> APSE_FUNC T rj_tail(T X, T Y, T Z, T P) noexcept {
+    const T xyz = X * Y * Z, pp = P * P;
+    const T e2 = X * Y + Z * (X + Y) - T(3) * pp;
+    const T e3 = xyz + P * (T(2) * e2 + T(4) * pp);
+    const T e4 = P * (T(2) * xyz + P * (e2 + T(3) * pp));
+    const T e5 = xyz * pp;
+    return rj_series(e2, e3, e4, e5);
+}
+
+/// |e| up to which R_C(1, 1 + e) is evaluated by the rational approximation rc1_rational.
+template <class T> APSE_FUNC constexpr T rc1_rational_bound() noexcept { return T(0.25); }
+
+/// R_C(1, 1 + e) = atan(sqrt e)/sqrt e = sum_k (-e)^k/(2k + 1) for |e| <= 1/4 by its Pade
+/// approximant [7/7] in double, [4/4] in float (exact rational coefficients, derived from the
+/// series): relative error below 1.1e-17 resp. 7.6e-11 there (measured at 50 digits). One
+/// division instead of the 24 series terms the same range would need.
+template <class T> APSE_FUNC T rc1_rational(T e) noexcept {
+    if constexpr (sizeof(T) == sizeof(float)) {
+        const T p = T(1) + e * (T(91) / T(51) + e * (T(83) / T(85) + e * (T(1289) / T(7735) +
+                    e * (T(16384) / T(3828825)))));
+        const T q = T(1) + e * (T(36) / T(17) + e * (T(126) / T(85) + e * (T(84) / T(221) +
+                    e * (T(63) / T(2431)))));
+        return p / q;
+    } else {
+        const T e2 = e * e, e4 = e2 * e2;
+        const T p = (T(1) + e * (T(286) / T(87))) + e2 * (T(1837) / T(435) + e * (T(1628) / T(609))) +
+                    e4 * ((T(15527) / T(18009) + e * (T(43322) / T(330165))) +
+                          e2 * (T(1811401) / T(244652265) + e * (T(4194304) / T(62386327575))));
+        const T q = (T(1) + e * (T(105) / T(29))) + e2 * (T(455) / T(87) + e * (T(1001) / T(261))) +
+                    e4 * ((T(1001) / T(667) + e * (T(1001) / T(3335))) +
+                          e2 * (T(1001) / T(38019) + e * (T(143) / T(215441))));
+        return p / q;
+    }
+}
+
+/// R_C(1, w) with e = w - 1 (both passed so that neither is computed by cancellation):
+/// the rational approximation for |e| <= 1/4, atan(sqrt e)/sqrt e for e > 0, and for e < 0,
+/// with u = sqrt(-e), atanh(u)/u = log((1 + u)/sqrt w)/u = log1p(u (1 + u/(1 + sqrt w))/sqrt w)/u
+/// (using 1 - sqrt w = u^2/(1 + sqrt w): the log1p argument is a sum of positive terms, accurate
+/// both for small u, where log would be ill-conditioned, and for w -> 0).
+template <class T> APSE_FUNC T rc1(T e, T w) noexcept {
+    if (std::fabs(e) <= rc1_rational_bound<T>()) return rc1_rational(e);
+    if (e > T(0)) {
+        const T r = std::sqrt(e);
+        return std::atan(r) / r;
+    }
+    const T u = std::sqrt(-e), sw = std::sqrt(w);
+    return std::log1p(u * (T(1) + u / (T(1) + sw)) / sw) / u;
+}
+
+/// R_C(x, y) for x >= 0, y > 0 (DLMF 19.2.17-19.2.18, written without cancellation).
+template <class T> APSE_FUNC APSE_CARLSON_NOINLINE T rc_core(T x, T y) noexcept {
+    if (x < y) {
+        const T d = y - x;
+        return std::atan(std::sqrt(d / x)) / std::sqrt(d);  // x = 0: atan(inf) = pi/2
+    }
+    if (x > y) {
+        // log((sqrt x + sqrt(x - y))/sqrt y) / sqrt(x - y); the log argument minus one is a sum
+        // of positive terms (sqrt x - sqrt y = d/(sqrt x + sqrt y)).
+        const T d = x - y, sd = std::sqrt(d), sx = std::sqrt(x), sy = std::sqrt(y);
+        const T r = (sd + d / (sx + sy)) / sy;
+        if (is_finite(r)) return std::log1p(r) / sd;
+        return (std::log(sx + sd) - std::log(sy)) / sd;  // the ratio overflows: y / x < eps^2
+    }
+    return T(1) / std::sqrt(x);
+}
+
+/// Square roots of two values. On x86-64 in double they share one SSE2 `sqrtpd`: the square
+/// root unit is not fully pipelined there (one sqrtsd per ~8 cycles, 20 cycles latency), so
+/// every extra root delays a duplication step (measured: R_F -12%, R_J -9% with pairs). The
+/// results are identical (IEEE square roots are correctly rounded either way).
+template <class T> APSE_FUNC void sqrt2(T x, T y, T& sx, T& sy) noexcept {
+#if APSE_CARLSON_SSE2
+    if constexpr (sizeof(T) == sizeof(double)) {
+        const __m128d r = _mm_sqrt_pd(_mm_set_pd(double(y), double(x)));
+        sx = T(_mm_cvtsd_f64(r));
+        sy = T(_mm_cvtsd_f64(_mm_unpackhi_pd(r, r)));
+        return;
+    }
+#endif
+    sx = std::sqrt(x);
+    sy = std::sqrt(y);
+}
+
+/// One duplication step on (x, y, z): replaces each argument v by (v + lambda)/4,
+/// lambda = sqrt(x y) + sqrt(y z) + sqrt(z x); returns l = lambda/4 and the three square roots.
+/// (Written as v/4 + l with l = (sx/4)(sy + sz) + (sy/4) sz — bit-identical, as the factors 1/4
+/// are exact — which keeps the dependency chain sqrt -> lambda -> v one operation shorter.)
+template <class T> struct DuplicationStep {
+    T l, sx, sy, sz;  // l = lambda / 4
+};
+template <class T> APSE_FUNC DuplicationStep<T> duplicate(T& x, T& y, T& z, T sx, T sy, T sz) noexcept {
+    const T l = (T(0.25) * sx) * (sy + sz) + (T(0.25) * sy) * sz;
+    x = T(0.25) * x + l;
+    y = T(0.25) * y + l;
+    z = T(0.25) * z + l;
+    return {l, sx, sy, sz};
+}
+template <class T> APSE_FUNC DuplicationStep<T> duplicate(T& x, T& y, T& z) noexcept {
+    T sx, sy;
+    sqrt2(x, y, sx, sy);
+    return duplicate(x, y, z, sx, sy, std::sqrt(z));
+}
+
+/// Runs the duplication: `step(f)` performs one step (f = 4^-m before step m), `lower()` returns a
+/// lower bound of every later mean A_n (the smallest current argument: the smallest argument
+/// never decreases). q = max |A_0 - v_i| / tolerance. Returns 4^-n after the n steps.
+///
+/// The number of steps is fixed before the loop instead of testing 4^-n q <= A_n in it: two
+/// steps, then the count from the smallest argument (n = 2 + ceil(log4(q / (16 min)))), so the
+/// loop's exit does not wait for the chain of square roots. It costs ~0.1 step more on average
+/// than the exact test; measured against an in-loop test, R_F is 6% faster, R_J 3% slower.
+/// When even the step cap does not suffice (not reachable by valid arguments: see rj_core),
+/// the result is NaN.
+template <class T, class Step, class Lower>
+APSE_FUNC T duplicate_until_converged(T q, T a0, Step&& step, Lower&& lower) noexcept {
+    T f = T(1);
+    if (!(q > a0)) return f;  // already within tolerance (e.g. equal arguments)
+    step(f);
+    f *= T(0.25);
+    step(f);
+    f *= T(0.25);
+    T rest = q * f;
+    const T lo = lower();
+    int n = 0;
+    while (rest > lo && n < carlson_max_steps) {
+        rest *= T(0.25);
+        ++n;
+    }
+    for (int i = 0; i < n; ++i) {
+        step(f);
+        f *= T(0.25);
+    }
+    return rest > lo ? quiet_nan<T>() : f;  // cannot converge within the cap: NaN, never garbage
+}
+
+/// R_F and R_J of one argument triple (the kernels that compute both share their work).
+template <class T> struct RfRj {
+    T rf, rj;
+};
+
+/// The complete integrals R_F(0, y, z) and R_J(0, y, z, p) (y, z > 0) by the arithmetic-
+/// geometric mean: with a_0 = sqrt z, g_0 = sqrt y, p_0 = sqrt p and
+///   a_{n+1} = (a_n + g_n)/2,  g_{n+1} = sqrt(a_n g_n),  p_{n+1} = (p_n^2 + a_n g_n)/(2 p_n),
+///   e_n = (p_n^2 - a_n g_n)/(p_n^2 + a_n g_n),  Q_0 = 1,  Q_{n+1} = Q_n e_n / 2,
+/// R_F(0, y, z) = pi / (2 M) and R_J(0, y, z, p) = 3 pi / (4 M p) S, S = sum_n Q_n,
+/// M = lim a_n = lim g_n (DLMF 19.8.1; DLMF 19.8.6-19.8.8 rewritten for R_J with
+/// Pi(n|m) = K(m) + (n/3) R_J(0, 1-m, 1, 1-n)). Both converge quadratically once p_n^2 is within
+/// a few powers of 4 of a_n g_n (before that p_n halves per step; see agm_suits).
+///
+/// S as summed above cancels when p << sqrt(y z) (e_0 -> -1 and e_1, e_2, ... -> +1, so
+/// S -> 1 - 1/2 - 1/4 - ...). It is summed instead as S = (1 + e_0) - (e_0/2) W,
+/// W = sum_{k>=1} (1 - e_k) prod_{1<=j<k} (e_j/2), with 1 + e = 2 p^2/s and 1 - e = 2 a g/s
+/// (s = p^2 + a g) computed without cancellation: e_k >= 0 for k >= 1 up to small negative
+/// values, so every term is positive, and S >= (1 + e_0) + |e_0| W / 2 for e_0 < 0.
+template <class T, bool WithRj>
+APSE_FUNC APSE_CARLSON_NOINLINE RfRj<T> agm_core(T y, T z, T p) noexcept {
+    constexpr T agm_tolerance = sizeof(T) == sizeof(float) ? T(3.4e-4) : T(1.49e-8);  // sqrt(eps)
+    T a = std::sqrt(z), g = std::sqrt(y);
+    T pn = std::sqrt(p), pp = p;    // p_n and p_n^2
+    T e0 = T(0), one_plus_e0 = T(1);  // e_0, 1 + e_0
+    T w = T(0), prod = T(1);        // W so far; prod_{1<=j<k} e_j/2
+    for (int k = 0; k < 2 * carlson_max_steps; ++k) {
+        const T ag = a * g;
+        // |a - g| <= sqrt(eps) a: the next mean is exact to eps/4 (a_{n+1} - M ~ (a - g)^2/(16 a)).
+        bool done = std::fabs(a - g) <= agm_tolerance * a;
+        if constexpr (WithRj) {
+            const T s = pp + ag, inv_s = T(1) / s, e = (pp - ag) * inv_s;
+            if (k == 0) {
+                e0 = e;
+                one_plus_e0 = T(2) * pp * inv_s;
+            } else {
+                w += prod * (T(2) * ag * inv_s);  // (1 - e_k) prod_{j<k} e_j/2
+                prod *= T(0.5) * e;
+            }
+            // the rest of S is below |e_0 prod e_k| eps-wise
+            done = done && k > 0 && std::fabs(prod) <= epsilon<T>() * T(0.0625);
+            if (done) break;
+            pn = s / (T(2) * pn);
+            pp = pn * pn;
+        } else if (done) {
+            break;
+        }
+        a = T(0.5) * (a + g);
+        g = std::sqrt(ag);
+    }
+    const T inv_m = T(2) / (a + g);
+    RfRj<T> r{half_pi_v<T> * inv_m, T(0)};
+    if constexpr (WithRj) {
+        const T sum = one_plus_e0 - T(0.5) * e0 * w;
+        r.rj = T(0.75) * pi_v<T> * inv_m * sum / p;
+    }
+    return r;
+}
+
+/// True when agm_core computes R_J(0, y, z, p) accurately and fast: p/sqrt(y z) in
+/// [2^-12, 2^32]. Far from sqrt(y z), p_n first halves once per step (~log4 of the ratio steps)
+/// and, for small p, the relative rounding errors of p_n accumulate (d ln p_{n+1} = e_n d ln p_n,
+/// |e_n| ~ 1): measured, the error grows beyond 3 eps below 2^-12; above, it stays < 2.5 eps up
+/// to 2^40. Outside the range, duplication (which handles any spread) takes over.
+template <class T> APSE_FUNC bool agm_suits(T y, T z, T p) noexcept {
+    const T r = p / (std::sqrt(y) * std::sqrt(z));
+    return r <= T(0x1p32) && r >= T(0x1p-12);
+}
+
+/// R_F(x, y, z) by duplication, for valid finite arguments without a zero, finite sum.
+template <class T> APSE_FUNC APSE_CARLSON_NOINLINE T rf_duplication(T x, T y, T z) noexcept {
+    const T a0 = (x + y + z) * (T(1) / T(3));
+    const T dx = a0 - x, dy = a0 - y;  // the deviations scale by exactly 4^-n
+    T a = a0;
+    const T f = duplicate_until_converged(
+        max_deviation(a0, x, y, z, z) * (T(1) / rf_tolerance<T>()), a0,
+        [&](T) { a = T(0.25) * a + duplicate(x, y, z).l; },
+        [&] { return min_of(min_of(x, y), z); });
+    const T s = f / a;
+    const T X = dx * s, Y = dy * s, Z = -(X + Y);
+    return rf_series(X * Y - Z * Z, X * Y * Z) / std::sqrt(a);
+}
+
+/// R_F(x, y, z) for valid finite arguments (at most one zero); the AGM when one is zero.
+template <class T> APSE_FUNC T rf_core(T x, T y, T z) noexcept {
+    if (x == T(0)) return agm_core<T, false>(y, z, T(1)).rf;
+    if (y == T(0)) return agm_core<T, false>(x, z, T(1)).rf;
+    if (z == T(0)) return agm_core<T, false>(x, y, T(1)).rf;
+    if (!is_finite(x + y + z))  // the mean would overflow: R_F(v/16) = 4 R_F(v)
+        return T(0.25) * rf_duplication(x * T(0.0625), y * T(0.0625), z * T(0.0625));
+    return rf_duplication(x, y, z);
+}
+
+/// R_F(x, y, z) and R_J(x, y, z, p) from one shared duplication (the R_F part only when WithRf).
+///
+/// R_J = 4^-n A_n^(-3/2) series + 6 sum_m 4^-m R_C(1, 1 + e_m) / d_m (Carlson 1995, eq. 2.39-2.40)
+/// with d_m = prod (sqrt p_m + sqrt v_m), e_m = 4^-3m delta / d_m^2, delta = prod (p - v):
+/// e_m = prod (sqrt p - sqrt v)/(sqrt p + sqrt v) lies in (-1, 1) and shrinks ~64x per step, so
+/// after step 0 (often already there) R_C is rc1's rational approximation, without atan or log.
+/// 1 + e_m = 2 sqrt(p)(p + lambda)/d_m exactly (the odd terms of prod(sqrt p +- sqrt v)
+/// cancel), which rc1 needs near e = -1. (Carlson's 1979 form R_C(alpha_m, beta_m) saves the
+/// root of p, but its e is unbounded and ~4x larger: for arguments log-uniform in [1e-2, 1e2],
+/// |e_0| > 1/4 in 61% of the calls instead of 25%, |e_1| > 1/4 in 12% instead of 5%.)
+template <class T, bool WithRf>
+APSE_FUNC APSE_CARLSON_NOINLINE RfRj<T> rj_core_unscaled(T x, T y, T z, T p) noexcept {
+    const T a0 = (x + y + z + T(2) * p) * T(0.2);
+    const T dx = a0 - x, dy = a0 - y, dz = a0 - z;
+    T q = max_deviation(a0, x, y, z, p) * (T(1) / rj_tolerance<T>());
+    // R_F's mean follows the same recurrence; run until both series are accurate.
+    T af = T(1), dfx = T(0), dfy = T(0);
+    if constexpr (WithRf) {
+        af = (x + y + z) * (T(1) / T(3));
+        dfx = af - x;
+        dfy = af - y;
+        q = max_of(q, max_deviation(af, x, y, z, z) * (T(1) / rf_tolerance<T>()));
+    }
+    T delta = (p - x) * (p - y) * (p - z);  // 4^3m delta_m
+    T a = a0, sum = T(0);
+    const T f = duplicate_until_converged(
+        q, min_of(a0, af),
+        [&](T fm) {
+            T sx, sy, sz, sp;
+            sqrt2(x, y, sx, sy);
+            sqrt2(z, p, sz, sp);
+            const DuplicationStep<T> st = duplicate(x, y, z, sx, sy, sz);
+            const T inv_d = T(1) / ((sp + sx) * (sp + sy) * (sp + sz));
+            const T e = delta * inv_d * inv_d;
+            const T w = T(2) * sp * (p + T(4) * st.l) * inv_d;  // 1 + e, without cancellation
+            sum += fm * rc1(e, w) * inv_d;
+            p = T(0.25) * p + st.l;
+            a = T(0.25) * a + st.l;
+            if constexpr (WithRf) af = T(0.25) * af + st.l;
+            delta *= T(1) / T(64);
+        },
+        [&] { return min_of(min_of(x, y), min_of(z, p)); });
+    const T s = f / a;
+    const T X = dx * s, Y = dy * s, Z = dz * s, P = -(X + Y + Z) * T(0.5);
+    RfRj<T> r{T(0), rj_tail(X, Y, Z, P) * (f / (a * std::sqrt(a))) + T(6) * sum};
+    if constexpr (WithRf) {
+        const T sf = f / af;
+        const T Xf = dfx * sf, Yf = dfy * sf, Zf = -(Xf + Yf);
+        r.rf = rf_series(Xf * Yf - Zf * Zf, Xf * Yf * Zf) / std::sqrt(af);
+    }
+    return r;
+}
+
+/// R_J (and optionally R_F) for valid finite arguments whose largest one is in a safe range:
+/// the AGM when one of x, y, z is zero (complete integral; 2-3x faster), else duplication.
+template <class T, bool WithRf>
+APSE_FUNC RfRj<T> rj_dispatch(T x, T y, T z, T p) noexcept {
+    // (Three call sites: with one, on pairs chosen by selects, g++ lays out the duplication
+    // path 13% slower; in device code agm_core is not inlined, so the copies cost nothing.)
+    if (x == T(0) && agm_suits(y, z, p)) return agm_core<T, true>(y, z, p);
+    if (y == T(0) && agm_suits(x, z, p)) return agm_core<T, true>(x, z, p);
+    if (z == T(0) && agm_suits(x, y, p)) return agm_core<T, true>(x, y, p);
+    return rj_core_unscaled<T, WithRf>(x, y, z, p);
+}
+
+/// R_J (and optionally R_F) for valid finite arguments. Rescales by a power of 4 when the
+/// largest argument is so large or small that delta = prod (p - v) (duplication) or
+/// 1/(p_n^2 + a_n g_n) (AGM) could overflow or lose precision to underflow (homogeneity:
+/// R_J(s v) = s^(-3/2) R_J(v), R_F(s v) = s^(-1/2) R_F(v); powers of 2 scale exactly).
+template <class T, bool WithRf>
+APSE_FUNC RfRj<T> rj_scaled(T x, T y, T z, T p) noexcept {
+    const T mx = max_of(max_of(x, y), max_of(z, p));
+    constexpr T hi = sizeof(T) == sizeof(float) ? T(0x1p40) : T(0x1p300);
+    constexpr T lo = sizeof(T) == sizeof(float) ? T(0x1p-32) : T(0x1p-300);
+    if (mx <= hi && mx >= lo) return rj_dispatch<T, WithRf>(x, y, z, p);
+    int ex = 0;
+    (void)std::frexp(mx, &ex);
+    const int k = ex / 2;  // scale by 4^-k: the largest argument lands in [1/4, 4)
+    const T s = std::ldexp(T(1), -2 * k);
+    RfRj<T> r = rj_dispatch<T, WithRf>(x * s, y * s, z * s, p * s);
+    r.rj = std::ldexp(r.rj, -3 * k);
+    if constexpr (WithRf) r.rf = std::ldexp(r.rf, -k);
+    return r;
+}
+
+/// R_J (and optionally R_F) for valid finite arguments.
+///
+/// When p exceeds x, y, z by far, duplication converges only linearly (p shrinks 4x per step
+/// while lambda, which does not involve p, stays at the scale of x, y, z: ~log4(p / max) steps,
+/// beyond the step cap for ratios above ~2^110). Then DLMF 19.21.12, with y the middle argument
+/// and (p - y)(q - y) = (x - y)(z - y), i.e. q = y - (y - x)(z - y)/(p - y) in [x, y]:
+///   R_J(x,y,z,p) = (3 R_F(x,y,z) - 3 R_C(x z/y, p q/y) + (y - q) R_J(x,y,z,q)) / (p - y),
+/// whose terms do not cancel (R_C ~ log(p)/sqrt(p) << R_F) and whose R_J has a moderate q.
+template <class T, bool WithRf = false>
+APSE_FUNC RfRj<T> rj_core(T x, T y, T z, T p) noexcept {
+    const T top = max_of(max_of(x, y), z);
+    if (!(p > T(0x1p16) * top)) return rj_scaled<T, WithRf>(x, y, z, p);
+    const T lo = min_of(min_of(x, y), z), mid = max_of(min_of(x, y), min_of(max_of(x, y), z));
+    const T shift = (mid - lo) * ((top - mid) / (p - mid));  // y - q >= 0
+    const T q = mid - shift;
+    const RfRj<T> r = rj_scaled<T, true>(x, y, z, q);
+    const T rc = rc_core(top * (lo / mid), p * (q / mid));
+    return {r.rf, (T(3) * (r.rf - rc) + shift * r.rj) / (p - mid)};
+}
+
+/// R_D(x, y, z) for valid finite arguments (z > 0, at most one of x, y zero):
+/// R_D = 4^-n A_n^(-3/2) series + 3 sum_m 4^-m / (sqrt z_m (z_m + lambda_m)).
+template <class T> APSE_FUNC APSE_CARLSON_NOINLINE T rd_core(T x, T y, T z) noexcept {
+    // R_D(0, y, z) = R_J(0, y, z, z): complete, by the AGM (via rj_core, which scales).
+    if (x == T(0) || y == T(0)) return rj_core(x, y, z, z).rj;
+    T scale = T(1);
+    if (!is_finite(x + y + T(3) * z)) {  // the sum overflows: R_D(v/16) = 64 R_D(v)
+        x *= T(0.0625), y *= T(0.0625), z *= T(0.0625);
+        scale = T(1) / T(64);
+    }
+    const T a0 = (x + y + T(3) * z) * T(0.2);
+    const T dx = a0 - x, dy = a0 - y;
+    T a = a0, sum = T(0);
+    const T f = duplicate_until_converged(
+        max_deviation(a0, x, y, z, z) * (T(1) / rj_tolerance<T>()), a0,
+        [&](T fm) {
+            const T z0 = z;
+            const DuplicationStep<T> st = duplicate(x, y, z);
+            sum += fm / (st.sz * (z0 + T(4) * st.l));
+            a = T(0.25) * a + st.l;
+        },
+        [&] { return min_of(min_of(x, y), z); });
+    const T s = f / a;
+    const T X = dx * s, Y = dy * s, Z = -(X + Y) * (T(1) / T(3));
+    return scale * (rj_tail(X, Y, Z, Z) * (f / (a * std::sqrt(a))) + T(3) * sum);
+}
+
+}  // namespace detail
+}  // namespace apse

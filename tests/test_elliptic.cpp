@@ -1,0 +1,295 @@
+// Tests of apse's elliptic integrals (include/apse/elliptic.hpp): the mpmath reference tables,
+// Carlson's published values, identities, the m = k^2 convention, domain errors and
+// pathological inputs. Every test runs for float and double.
+#include <apse/elliptic.hpp>
+
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+#include <limits>
+#include <sstream>
+#include <string>
+#include <type_traits>
+#include <vector>
+
+namespace {
+
+// Template argument deduction from the arguments' type.
+static_assert(std::is_same<decltype(apse::carlson_rf(1.0, 2.0, 0.0)), double>::value, "");
+static_assert(std::is_same<decltype(apse::carlson_rf(1.f, 2.f, 3.f)), float>::value, "");
+static_assert(std::is_same<decltype(apse::ellint_pi(-2.f, 0.5f, 0.5f)), float>::value, "");
+
+template <class T> constexpr double eps() { return double(apse::epsilon<T>()); }
+
+double rel_error(double v, double ref) {
+    if (ref == 0) return v == 0 ? 0 : std::numeric_limits<double>::infinity();
+    const double e = std::fabs(v - ref) / std::fabs(ref);
+    return e == e ? e : std::numeric_limits<double>::infinity();  // NaN counts as infinite
+}
+
+// ---- reference tables (tools/gen_elliptic_reference.py) ---------------------------------------
+
+struct Row {
+    std::vector<double> in;
+    long double ref;
+    std::string line;
+};
+
+// '#' comments, one header line, then rows "<inputs...>,value,category". Inputs are hexadecimal
+// floating literals exact in float (std::strtod parses them exactly); the value has 30 digits.
+std::vector<Row> read_table(const std::string& name, std::size_t n_in) {
+    const std::string path = std::string(APSE_TEST_DATA_DIR) + "/elliptic/" + name + ".csv";
+    std::ifstream file(path);
+    INFO("reference table " << path);
+    std::vector<Row> rows;
+    std::string line;
+    bool header = false;
+    while (std::getline(file, line)) {
+        if (line.empty() || line[0] == '#') continue;
+        if (!header) {
+            header = true;
+            continue;
+        }
+        std::vector<std::string> fields;
+        std::stringstream ss(line);
+        std::string field;
+        while (std::getline(ss, field, ',')) fields.push_back(field);
+        REQUIRE(fields.size() == n_in + 2);
+        Row r;
+        for (std::size_t i = 0; i < n_in; ++i) r.in.push_back(std::strtod(fields[i].c_str(), nullptr));
+        r.ref = std::strtold(fields[n_in].c_str(), nullptr);
+        r.line = line;
+        rows.push_back(r);
+    }
+    return rows;
+}
+
+// The largest relative error of f over a table must stay within budget * eps(T). The inputs
+// are exact in float and the reference carries 30 digits (its own error is ~1e-30), so the
+// budget is the whole tolerance: nothing is added for the reference or for input rounding.
+template <class T, class F>
+void check_table(const std::string& name, std::size_t n_in, double budget, F&& f) {
+    const std::vector<Row> rows = read_table(name, n_in);
+    REQUIRE(rows.size() >= 300);  // an empty or missing table fails
+    double worst = 0;
+    std::string worst_line;
+    for (const Row& r : rows) {
+        T a[4] = {};
+        for (std::size_t i = 0; i < n_in; ++i) {
+            a[i] = T(r.in[i]);
+            REQUIRE(double(a[i]) == r.in[i]);  // exact in T
+        }
+        const double e = rel_error(double(f(a)), double(r.ref));
+        if (e > worst || e != e) {
+            worst = e;
+            worst_line = r.line;
+        }
+    }
+    INFO(name << ": worst row " << worst_line << " -> " << worst / eps<T>() << " eps");
+    CHECK(worst <= budget * eps<T>());
+}
+
+}  // namespace
+
+TEMPLATE_TEST_CASE("elliptic: reference tables", "[elliptic]", float, double) {
+    using T = TestType;
+    check_table<T>("carlson_rf", 3, 4, [](const T* a) { return apse::carlson_rf(a[0], a[1], a[2]); });
+    check_table<T>("carlson_rd", 3, 8, [](const T* a) { return apse::carlson_rd(a[0], a[1], a[2]); });
+    check_table<T>("carlson_rj", 4, 8,
+                   [](const T* a) { return apse::carlson_rj(a[0], a[1], a[2], a[3]); });
+    check_table<T>("carlson_rc", 2, 4, [](const T* a) { return apse::carlson_rc(a[0], a[1]); });
+    check_table<T>("ellint_f", 2, 8, [](const T* a) { return apse::ellint_f(a[0], a[1]); });
+    check_table<T>("ellint_pi", 3, 16, [](const T* a) { return apse::ellint_pi(a[0], a[1], a[2]); });
+    check_table<T>("comp_ellint_k", 1, 8, [](const T* a) { return apse::comp_ellint_k(a[0]); });
+    check_table<T>("comp_ellint_pi", 2, 16, [](const T* a) { return apse::comp_ellint_pi(a[0], a[1]); });
+}
+
+TEMPLATE_TEST_CASE("elliptic: Carlson 1995 test values", "[elliptic]", float, double) {
+    using T = TestType;
+    // Carlson, Numer. Algorithms 10 (1995), table of test values (14 digits; each re-checked
+    // with mpmath). The tolerance is the printed precision, or the budget for float.
+    const double tol4 = std::max(1e-13, 4 * eps<T>()), tol8 = std::max(1e-13, 8 * eps<T>());
+    CHECK(rel_error(apse::carlson_rf(T(1), T(2), T(0)), 1.3110287771461) <= tol4);
+    CHECK(rel_error(apse::carlson_rf(T(2), T(3), T(4)), 0.58408284167715) <= tol4);
+    CHECK(rel_error(apse::carlson_rc(T(0), T(0.25)), 3.1415926535898) <= tol4);
+    CHECK(rel_error(apse::carlson_rc(T(2.25), T(2)), 0.69314718055995) <= tol4);
+    CHECK(rel_error(apse::carlson_rj(T(0), T(1), T(2), T(3)), 0.77688623778582) <= tol8);
+    CHECK(rel_error(apse::carlson_rj(T(2), T(3), T(4), T(5)), 0.14297579667157) <= tol8);
+    CHECK(rel_error(apse::carlson_rd(T(0), T(2), T(1)), 1.7972103521034) <= tol8);
+    CHECK(rel_error(apse::carlson_rd(T(2), T(3), T(4)), 0.16510527294261) <= tol8);
+}
+
+TEMPLATE_TEST_CASE("elliptic: the parameter convention is m = k^2", "[elliptic]", float, double) {
+    using T = TestType;
+    // K(m = 0.5) = 1.8540746773013719; with the modulus k = 0.5 it would be 1.6857503548125961.
+    CHECK(rel_error(apse::comp_ellint_k(T(0.5)), 1.8540746773013719) <= 8 * eps<T>());
+    CHECK(rel_error(apse::comp_ellint_k(T(0.25)), 1.6857503548125961) <= 8 * eps<T>());
+    // F(1|0.5) (mpmath ellipf(1, 0.5)) and Pi(0.25;1|0.5) (ellippi(0.25, 1, 0.5)): the sign of
+    // n is DLMF's (Pi grows with n).
+    CHECK(rel_error(apse::ellint_f(T(1), T(0.5)), 1.0832167728451688) <= 8 * eps<T>());
+    CHECK(rel_error(apse::ellint_pi(T(0.25), T(1), T(0.5)), 1.1716354216186772) <= 16 * eps<T>());
+}
+
+TEMPLATE_TEST_CASE("elliptic: identities", "[elliptic]", float, double) {
+    using T = TestType;
+    const double e = eps<T>();
+    const T vals[] = {T(0), T(1e-3), T(0.25), T(0.7), T(1), T(3.5), T(40), T(1e4)};
+    for (T x : vals)
+        for (T y : vals)
+            for (T z : vals) {
+                if ((x == 0) + (y == 0) + (z == 0) > 1) continue;
+                INFO("x, y, z = " << x << ", " << y << ", " << z);
+                const T rf = apse::carlson_rf(x, y, z);
+                // symmetry
+                CHECK(rel_error(apse::carlson_rf(y, z, x), rf) <= 8 * e);
+                CHECK(rel_error(apse::carlson_rf(z, y, x), rf) <= 8 * e);
+                // homogeneity with an exact scale (4^3 and 4^-2): R_F(l v) = l^(-1/2) R_F(v)
+                CHECK(rel_error(apse::carlson_rf(T(64) * x, T(64) * y, T(64) * z), rf / 8) <= 8 * e);
+                CHECK(rel_error(apse::carlson_rf(x / 16, y / 16, z / 16), rf * 4) <= 8 * e);
+                if (z > 0) {
+                    const T rd = apse::carlson_rd(x, y, z);
+                    CHECK(rel_error(apse::carlson_rd(y, x, z), rd) <= 16 * e);
+                    CHECK(rel_error(apse::carlson_rd(T(4) * x, T(4) * y, T(4) * z), rd / 8) <= 16 * e);
+                    CHECK(rel_error(apse::carlson_rj(x, y, z, z), rd) <= 16 * e);
+                }
+                for (T p : {T(1e-3), T(0.6), T(2), T(300)}) {
+                    const T rj = apse::carlson_rj(x, y, z, p);
+                    CHECK(rel_error(apse::carlson_rj(z, x, y, p), rj) <= 16 * e);
+                    CHECK(rel_error(apse::carlson_rj(y, z, x, p), rj) <= 16 * e);
+                    CHECK(rel_error(apse::carlson_rj(x / 4, y / 4, z / 4, p / 4), rj * 8) <= 16 * e);
+                }
+            }
+    for (T x : vals) {
+        if (x == 0) continue;
+        CHECK(rel_error(apse::carlson_rf(x, x, x), 1 / std::sqrt(double(x))) <= 4 * e);
+        CHECK(rel_error(apse::carlson_rd(x, x, x), std::pow(double(x), -1.5)) <= 8 * e);
+        CHECK(rel_error(apse::carlson_rj(x, x, x, x), std::pow(double(x), -1.5)) <= 8 * e);
+        for (T y : vals) {
+            CHECK(rel_error(apse::carlson_rc(y, x), apse::carlson_rf(y, x, x)) <= 8 * e);
+        }
+    }
+    for (T m : {T(-1e4), T(-3), T(-0.5), T(0), T(0.3), T(0.9), T(0.999)}) {
+        INFO("m = " << m);
+        for (T phi : {T(1e-6), T(0.1), T(0.7), T(1.2), T(1.5)}) {
+            const T f = apse::ellint_f(phi, m);
+            CHECK(apse::ellint_f(-phi, m) == -f);  // odd in phi
+            CHECK(rel_error(apse::ellint_pi(T(0), phi, m), f) <= 16 * e);
+            for (T n : {T(-1e4), T(-2), T(-0.2), T(0.5)})
+                CHECK(apse::ellint_pi(n, -phi, m) == -apse::ellint_pi(n, phi, m));
+        }
+        // K(m) = F(pi/2|m): T(pi/2) differs from pi/2 by < eps/2 relative, which moves F by at
+        // most (eps pi/4)/sqrt(1 - m).
+        const double slack = e * std::max(1.0, 1 / std::sqrt(1 - double(m)));
+        const T k = apse::comp_ellint_k(m);
+        CHECK(rel_error(apse::ellint_f(apse::half_pi_v<T>, m), k) <= 16 * e + slack);
+        CHECK(rel_error(apse::comp_ellint_pi(T(0), m), k) <= 16 * e);
+        for (T n : {T(-1e4), T(-2), T(-0.2), T(0.5)}) {
+            const double slack_n = slack * std::max(1.0, 1 / (1 - double(n)));
+            CHECK(rel_error(apse::ellint_pi(n, apse::half_pi_v<T>, m), apse::comp_ellint_pi(n, m)) <=
+                  32 * e + 4 * slack_n);
+        }
+        // periodic extension: F(phi + pi) = F(phi) + 2K
+        CHECK(rel_error(apse::ellint_f(T(0.5) + apse::pi_v<T>, m),
+                        double(apse::ellint_f(T(0.5), m)) + 2 * double(k)) <= 8 * e + 8 * slack);
+    }
+}
+
+TEMPLATE_TEST_CASE("elliptic: outside the domain the result is NaN", "[elliptic]", float, double) {
+    using T = TestType;
+    const T nan = std::numeric_limits<T>::quiet_NaN(), inf = std::numeric_limits<T>::infinity();
+    auto is_nan = [](T v) { return v != v; };
+    // negative arguments, two zeros, NaN and infinities
+    CHECK(is_nan(apse::carlson_rf(T(-1), T(1), T(1))));
+    CHECK(is_nan(apse::carlson_rf(T(0), T(0), T(1))));
+    CHECK(is_nan(apse::carlson_rf(nan, T(1), T(1))));
+    CHECK(is_nan(apse::carlson_rf(inf, T(1), T(1))));
+    CHECK(is_nan(apse::carlson_rd(T(1), T(1), T(0))));
+    CHECK(is_nan(apse::carlson_rd(T(0), T(0), T(1))));
+    CHECK(is_nan(apse::carlson_rd(T(1), T(-1), T(1))));
+    CHECK(is_nan(apse::carlson_rd(T(1), T(1), inf)));
+    CHECK(is_nan(apse::carlson_rj(T(1), T(1), T(1), T(0))));   // p = 0
+    CHECK(is_nan(apse::carlson_rj(T(1), T(1), T(1), T(-1))));  // p < 0: principal value, unsupported
+    CHECK(is_nan(apse::carlson_rj(T(0), T(0), T(1), T(1))));
+    CHECK(is_nan(apse::carlson_rj(T(1), T(-2), T(1), T(1))));
+    CHECK(is_nan(apse::carlson_rj(T(1), T(1), T(1), nan)));
+    CHECK(is_nan(apse::carlson_rj(T(1), T(1), inf, T(1))));
+    CHECK(is_nan(apse::carlson_rc(T(1), T(0))));
+    CHECK(is_nan(apse::carlson_rc(T(1), T(-1))));
+    CHECK(is_nan(apse::carlson_rc(T(-1), T(1))));
+    CHECK(is_nan(apse::carlson_rc(nan, T(1))));
+    CHECK(is_nan(apse::carlson_rc(T(1), inf)));
+    // Legendre: m >= 1 (also where F could be defined, |sin phi| < 1/sqrt m), n >= 1, NaN, inf
+    CHECK(is_nan(apse::ellint_f(T(0.3), T(1))));
+    CHECK(is_nan(apse::ellint_f(T(0.3), T(2))));
+    CHECK(is_nan(apse::ellint_f(nan, T(0.5))));
+    CHECK(is_nan(apse::ellint_f(inf, T(0.5))));
+    CHECK(is_nan(apse::ellint_f(T(0.3), -inf)));
+    CHECK(is_nan(apse::ellint_pi(T(1), T(0.3), T(0.5))));
+    CHECK(is_nan(apse::ellint_pi(T(2), T(0.3), T(0.5))));
+    CHECK(is_nan(apse::ellint_pi(T(0.5), T(0.3), T(1))));
+    CHECK(is_nan(apse::ellint_pi(-inf, T(0.3), T(0.5))));
+    CHECK(is_nan(apse::ellint_pi(T(0.5), nan, T(0.5))));
+    CHECK(is_nan(apse::comp_ellint_k(T(1))));
+    CHECK(is_nan(apse::comp_ellint_k(T(1.5))));
+    CHECK(is_nan(apse::comp_ellint_k(nan)));
+    CHECK(is_nan(apse::comp_ellint_k(-inf)));
+    CHECK(is_nan(apse::comp_ellint_pi(T(1), T(0.5))));
+    CHECK(is_nan(apse::comp_ellint_pi(T(0.5), T(1))));
+    CHECK(is_nan(apse::comp_ellint_pi(nan, T(0.5))));
+}
+
+TEMPLATE_TEST_CASE("elliptic: pathological inputs return quickly, finite or NaN", "[elliptic]",
+                   float, double) {
+    using T = TestType;
+    using L = std::numeric_limits<T>;
+    // Extremes of the exponent range mixed (incl. denormals and the largest finite value): every
+    // call terminates (hard iteration caps) and returns a non-negative number, +inf where the
+    // value overflows, or NaN — never a negative or garbage value, and never hangs.
+    const T v[] = {T(0), L::denorm_min(), L::min(), T(1e-30), L::epsilon(), T(1), T(3),
+                   T(1e30), L::max() / 4, L::max()};
+    auto sane = [](T r) { return r != r || r >= T(0); };
+    for (T x : v)
+        for (T y : v)
+            for (T z : v) {
+                INFO("x, y, z = " << x << ", " << y << ", " << z);
+                CHECK(sane(apse::carlson_rf(x, y, z)));
+                CHECK(sane(apse::carlson_rd(x, y, z)));
+                CHECK(sane(apse::carlson_rc(x, y)));
+                for (T p : v) CHECK(sane(apse::carlson_rj(x, y, z, p)));
+            }
+    // Arguments near the largest finite value (whose sums overflow) are still valid.
+    CHECK(rel_error(apse::carlson_rf(L::max(), L::max(), L::max()), 1 / std::sqrt(double(L::max()))) <=
+          4 * eps<T>());
+    CHECK(rel_error(apse::carlson_rc(L::max(), L::max()), 1 / std::sqrt(double(L::max()))) <= 4 * eps<T>());
+    CHECK(rel_error(apse::carlson_rf(L::max(), L::max() / 2, T(0)),
+                    double(apse::carlson_rf(T(4), T(2), T(0))) / std::sqrt(double(L::max()) / 4)) <=
+          8 * eps<T>());
+    // In the finite-result range the values are still accurate (homogeneity at the extremes).
+    // (4^k scales, as extreme as the type allows while R_J ~ 8^-k stays a normal number.)
+    const int ks[] = {-40, -20, -10, 10, 20, 40};
+    for (int k0 : ks) {
+        const int k = sizeof(T) == sizeof(float) ? k0 : 7 * k0;
+        const T s = std::ldexp(T(1), 2 * k);
+        const double ref_rf = 0.58408284167715170669, ref_rj = 0.14297579667156753833;
+        CHECK(rel_error(double(apse::carlson_rf(2 * s, 3 * s, 4 * s)) * std::ldexp(1.0, k), ref_rf) <=
+              4 * eps<T>());
+        CHECK(rel_error(double(apse::carlson_rj(2 * s, 3 * s, 4 * s, 5 * s)) * std::ldexp(1.0, 3 * k),
+                        ref_rj) <= 8 * eps<T>());
+    }
+    // Legendre at the extremes of m, n and phi.
+    const T big = T(1e30);
+    for (T m : {-big, T(-1e4), T(0), T(1) - L::epsilon() / 2}) {
+        for (T phi : {T(0), L::denorm_min(), T(1), T(1e4), big}) {
+            const T f = apse::ellint_f(phi, m);
+            CHECK((f != f || f >= T(0)));
+            for (T n : {-big, T(-1e4), T(0), T(1) - L::epsilon() / 2}) {
+                const T p = apse::ellint_pi(n, phi, m);
+                CHECK((p != p || p >= T(0)));
+                const T cp = apse::comp_ellint_pi(n, m);
+                CHECK((cp != cp || cp >= T(0)));
+            }
+        }
+    }
+}

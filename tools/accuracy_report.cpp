@@ -1,0 +1,187 @@
+// accuracy_report: measures apse's elliptic integrals against the mpmath reference tables in
+// tests/data/elliptic and prints a markdown table of the largest and mean relative error, in
+// units of the machine epsilon of the type, for every function and for
+//   float (native)   — the computation in float,
+//   float (promoted) — the computation in double, rounded to float,
+//   double,
+// plus the input with the largest error of the path the public float/double functions use.
+// This is the table of docs/elliptic.md (and the README).
+//
+//   accuracy_report [data_dir]      (default: the source tree's tests/data/elliptic)
+//
+// The reference values carry 30 digits and the inputs are exactly representable in float, so
+// the measured error is the library's own error (the reference's is ~1e-30).
+#include <apse/elliptic.hpp>
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <functional>
+#include <sstream>
+#include <string>
+#include <type_traits>
+#include <vector>
+
+#ifndef APSE_TEST_DATA_DIR
+#define APSE_TEST_DATA_DIR "tests/data"
+#endif
+
+namespace {
+
+struct Row {
+    std::vector<double> in;  // exact in float
+    long double ref;         // 30 digits, parsed to long double (64-bit significand on x86)
+    std::string category;
+};
+
+// Reads "<in...>,value,category" rows after '#' comments and one header line.
+std::vector<Row> read_table(const std::string& path, std::size_t n_in) {
+    std::vector<Row> rows;
+    std::ifstream file(path);
+    std::string line;
+    bool header = false;
+    while (std::getline(file, line)) {
+        if (line.empty() || line[0] == '#') continue;
+        if (!header) {
+            header = true;
+            continue;
+        }
+        std::vector<std::string> fields;
+        std::stringstream ss(line);
+        std::string field;
+        while (std::getline(ss, field, ',')) fields.push_back(field);
+        if (fields.size() != n_in + 2) {
+            std::fprintf(stderr, "%s: bad row: %s\n", path.c_str(), line.c_str());
+            std::exit(2);
+        }
+        Row r;
+        for (std::size_t i = 0; i < n_in; ++i) r.in.push_back(std::strtod(fields[i].c_str(), nullptr));
+        r.ref = std::strtold(fields[n_in].c_str(), nullptr);
+        r.category = fields[n_in + 1];
+        rows.push_back(r);
+    }
+    return rows;
+}
+
+// Relative error of v in units of eps; a NaN or a wrong zero counts as infinite.
+long double rel_error(long double v, long double ref, long double eps) {
+    if (ref == 0) return v == 0 ? 0 : INFINITY;
+    const long double e = std::fabs(v - ref) / std::fabs(ref) / eps;
+    return e == e ? e : INFINITY;
+}
+
+using Eval = std::function<long double(const std::vector<double>&)>;
+
+struct Stats {
+    long double max = 0, sum = 0;
+    std::size_t count = 0, worst = 0;
+};
+
+Stats measure(const std::vector<Row>& rows, const Eval& f, long double eps) {
+    Stats s;
+    s.max = -1;
+    for (std::size_t i = 0; i < rows.size(); ++i) {
+        const long double e = rel_error(f(rows[i].in), rows[i].ref, eps);
+        s.sum += e;
+        ++s.count;
+        if (e > s.max) {
+            s.max = e;
+            s.worst = i;
+        }
+    }
+    return s;
+}
+
+// One function: its table, argument count, budget and the three evaluation paths.
+struct Function {
+    const char* name;
+    std::size_t n_in;
+    double budget;
+    Eval native_float, promoted_float, as_double;
+    bool public_float_promoted;
+};
+
+// f(W(a[0]), ..., W(a[N-1])) rounded to T.
+template <class W, class T, std::size_t N, class F>
+long double call(F&& f, const std::vector<double>& a) {
+    if constexpr (N == 1) return static_cast<long double>(static_cast<T>(f(W(a[0]))));
+    else if constexpr (N == 2) return static_cast<long double>(static_cast<T>(f(W(a[0]), W(a[1]))));
+    else if constexpr (N == 3) return static_cast<long double>(static_cast<T>(f(W(a[0]), W(a[1]), W(a[2]))));
+    else return static_cast<long double>(static_cast<T>(f(W(a[0]), W(a[1]), W(a[2]), W(a[3]))));
+}
+
+// The three evaluation paths of one detail::*_impl template with N arguments.
+#define APSE_PATHS(impl, N)                                                                    \
+    [](const std::vector<double>& a) {                                                         \
+        return call<float, float, N>([](auto... v) { return apse::detail::impl<float>(v...); }, a); \
+    },                                                                                         \
+        [](const std::vector<double>& a) {                                                     \
+            return call<double, float, N>([](auto... v) { return apse::detail::impl<double>(v...); }, a); \
+        },                                                                                     \
+        [](const std::vector<double>& a) {                                                     \
+            return call<double, double, N>([](auto... v) { return apse::detail::impl<double>(v...); }, a); \
+        }
+
+std::string fmt_stats(const Stats& s, bool bold) {
+    char buf[96];
+    std::snprintf(buf, sizeof buf, "%s%.2Lf / %.2Lf%s", bold ? "**" : "", s.max, s.sum / s.count,
+                  bold ? "**" : "");
+    return buf;
+}
+
+std::string fmt_input(const std::vector<double>& in) {
+    std::string s = "(";
+    char buf[64];
+    for (std::size_t i = 0; i < in.size(); ++i) {
+        std::snprintf(buf, sizeof buf, "%s%.9g", i ? ", " : "", in[i]);
+        s += buf;
+    }
+    return s + ")";
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    const std::string dir = argc > 1 ? argv[1] : std::string(APSE_TEST_DATA_DIR) + "/elliptic";
+    const bool float_promoted = !std::is_same<apse::detail::elliptic_work_t<float>, float>::value;
+    const Function functions[] = {
+        {"carlson_rf", 3, 4, APSE_PATHS(rf_impl, 3), float_promoted},
+        {"carlson_rd", 3, 8, APSE_PATHS(rd_impl, 3), float_promoted},
+        {"carlson_rj", 4, 8, APSE_PATHS(rj_impl, 4), float_promoted},
+        {"carlson_rc", 2, 4, APSE_PATHS(rc_impl, 2), float_promoted},
+        {"ellint_f", 2, 8, APSE_PATHS(f_impl, 2), float_promoted},
+        {"ellint_pi", 3, 16, APSE_PATHS(pi_impl, 3), float_promoted},
+        {"comp_ellint_k", 1, 8, APSE_PATHS(k_impl, 1), float_promoted},
+        {"comp_ellint_pi", 2, 16, APSE_PATHS(comp_pi_impl, 2), float_promoted},
+    };
+    const long double eps_f = 0x1p-23L, eps_d = 0x1p-52L;
+    std::printf("Relative error in units of eps (float: 2^-23, double: 2^-52), max / mean over the "
+                "rows of %s/*.csv.\n\n", dir.c_str());
+    std::printf("| function | rows | budget | float native | float promoted | double | "
+                "worst float input | worst double input |\n");
+    std::printf("|---|---:|---:|---:|---:|---:|---|---|\n");
+    bool ok = true;
+    for (const Function& f : functions) {
+        const std::vector<Row> rows = read_table(dir + "/" + f.name + ".csv", f.n_in);
+        if (rows.empty()) {
+            std::printf("| %s | 0 | (missing table) |||||\n", f.name);
+            ok = false;
+            continue;
+        }
+        const Stats nf = measure(rows, f.native_float, eps_f);
+        const Stats pf = measure(rows, f.promoted_float, eps_f);
+        const Stats dd = measure(rows, f.as_double, eps_d);
+        const Stats& pub = f.public_float_promoted ? pf : nf;
+        ok = ok && pub.max <= f.budget && dd.max <= f.budget;
+        std::printf("| %s | %zu | %g | %s | %s | %s | %s %s | %s %s |\n", f.name, rows.size(),
+                    f.budget, fmt_stats(nf, !f.public_float_promoted).c_str(),
+                    fmt_stats(pf, f.public_float_promoted).c_str(), fmt_stats(dd, false).c_str(),
+                    fmt_input(rows[pub.worst].in).c_str(), rows[pub.worst].category.c_str(),
+                    fmt_input(rows[dd.worst].in).c_str(), rows[dd.worst].category.c_str());
+    }
+    std::printf("\n**bold**: the path the public float functions use. Budgets: R_F, R_C 4; R_D, R_J, "
+                "F, K 8; Pi 16.\n");
+    std::printf("%s\n", ok ? "All within budget." : "SOME FUNCTION EXCEEDS ITS BUDGET.");
+    return ok ? 0 : 1;
+}
