@@ -1,0 +1,78 @@
+// apse — area-preserving parameterizations for spherical ellipses.
+// SPDX-License-Identifier: MIT
+#pragma once
+
+/// @file detail/concentric.hpp
+/// Shirley–Chiu concentric map of the unit square onto the unit disk and its inverse, in polar
+/// form (MATH.md §4). It is area-preserving (up to the factor pi) and maps concentric squares
+/// to concentric circles, so it keeps stratification. Used by uniform-by-area disk sampling
+/// (point = radius (cos angle, sin angle)) and by the LD-radial map (azimuthal area fraction
+/// `turns` = angle / (2 pi), radial fraction radius^2).
+
+#include <cmath>
+
+#include "../config.hpp"
+#include "../math.hpp"
+#include "glm.hpp"
+
+namespace apse {
+namespace detail {
+
+/// A point of the unit disk in polar form: `radius` in [0, 1], `turns` = angle / (2 pi) in
+/// [0, 1) (computed directly, without rounding through pi).
+template <class T> struct ConcentricPolar {
+    T radius;  ///< in [0, 1]
+    T turns;   ///< angle / (2 pi), in [0, 1)
+    /// The polar angle in radians, in [0, 2 pi).
+    APSE_FUNC T angle() const noexcept { return two_pi_v<T> * turns; }
+};
+
+/// Concentric map (MATH.md §4): A = 2u1 − 1, B = 2u2 − 1; if |A| > |B|: radius |A|,
+/// angle (pi/4)(B/A) (+pi if A < 0, +2pi if A > 0 > B); else radius |B|,
+/// angle pi/2 − (pi/4)(A/B) (+pi if B < 0); the square's centre → (0, 0).
+/// Domain [0, 1]^2; coordinates outside are clamped into it (NaN → 0).
+template <class T> APSE_FUNC ConcentricPolar<T> concentric_to_disk(const glm::vec<2, T>& u) noexcept {
+    const T a = T(2) * clamp(u.x, T(0), T(1)) - T(1);
+    const T b = T(2) * clamp(u.y, T(0), T(1)) - T(1);
+    if (a == T(0) && b == T(0)) return {T(0), T(0)};
+    T radius, turns;
+    if (std::fabs(a) > std::fabs(b)) {
+        radius = std::fabs(a);
+        turns = T(0.125) * (b / a);  // in (-1/8, 1/8)
+        if (a < T(0)) turns += T(0.5);
+        else if (turns < T(0)) turns += T(1);
+    } else {
+        radius = std::fabs(b);
+        turns = T(0.25) - T(0.125) * (a / b);  // in [1/8, 3/8]
+        if (b < T(0)) turns += T(0.5);
+    }
+    if (!(turns < T(1))) turns = T(0);  // 1 − tiny rounded up: the same point
+    return {radius, turns};
+}
+
+/// Inverse of concentric_to_disk: the square point of the disk point (radius, turns) (radius in
+/// [0, 1], turns = angle / (2 pi), any real: reduced modulo 1). Radii above 1 are clamped to 1.
+template <class T> APSE_FUNC glm::vec<2, T> concentric_from_disk(T radius, T turns) noexcept {
+    const T rho = clamp(radius, T(0), T(1));
+    T t = turns - std::floor(turns);  // [0, 1]
+    if (!(t >= T(0) && t < T(1))) t = T(0);
+    const T s = T(8) * t;  // eighths of a turn, [0, 8)
+    T a, b;
+    if (s < T(1) || s >= T(7)) {  // right sector: A = rho, B/A = 8 turns (turns in [-1/8, 1/8))
+        a = rho;
+        b = rho * (s < T(1) ? s : s - T(8));
+    } else if (s < T(3)) {  // top: B = rho, A/B = 2 − 8 turns
+        b = rho;
+        a = rho * (T(2) - s);
+    } else if (s < T(5)) {  // left: A = −rho, B/A = 8 turns − 4
+        a = -rho;
+        b = -rho * (s - T(4));
+    } else {  // bottom: B = −rho, A/B = 6 − 8 turns
+        b = -rho;
+        a = -rho * (T(6) - s);
+    }
+    return glm::vec<2, T>(T(0.5) * (a + T(1)), T(0.5) * (b + T(1)));
+}
+
+}  // namespace detail
+}  // namespace apse

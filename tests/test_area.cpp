@@ -1,0 +1,224 @@
+// Tests of detail/concentric.hpp (Shirley–Chiu map, polar form) and baselines/area.hpp
+// (uniform-by-area disk sampling with the solid-angle pdf).
+#include <apse/baselines/area.hpp>
+#include <apse/projection.hpp>
+
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <random>
+
+namespace {
+
+template <class T> using vec2 = glm::vec<2, T>;
+template <class T> using vec3 = glm::vec<3, T>;
+
+template <class T> vec2<T> disk_point(const apse::detail::ConcentricPolar<T>& p) {
+    return vec2<T>(p.radius * std::cos(p.angle()), p.radius * std::sin(p.angle()));
+}
+
+/// Omega of a disk by brute force: a fine polar grid about the disk's centre of
+/// cos(theta_l) / dist^2 dA (midpoint rule in the radius and angle; independent of apse).
+double disk_omega_grid(const vec3<double>& o, const vec3<double>& c, const vec3<double>& n, double r) {
+    const vec3<double> nn = glm::normalize(n);
+    const vec3<double> e1 = apse::detail::any_perpendicular(nn), e2 = glm::cross(nn, e1);
+    const int nr = 600, na = 1200;
+    double sum = 0;
+    for (int i = 0; i < nr; ++i) {
+        const double rho = r * (i + 0.5) / nr;
+        for (int j = 0; j < na; ++j) {
+            const double a = 2 * M_PI * (j + 0.5) / na;
+            const vec3<double> p = c + rho * (std::cos(a) * e1 + std::sin(a) * e2);
+            const vec3<double> d = p - o;
+            const double dist2 = glm::dot(d, d);
+            sum += std::fabs(glm::dot(d, nn)) / (dist2 * std::sqrt(dist2)) * rho;
+        }
+    }
+    return sum * (r / nr) * (2 * M_PI / na);
+}
+
+}  // namespace
+
+TEMPLATE_TEST_CASE("concentric map: ranges, centre, boundary, round trip", "[area][concentric]", float, double) {
+    using T = TestType;
+    const T tol = T(16) * apse::epsilon<T>();
+    // centre and corners
+    const auto c = apse::detail::concentric_to_disk(vec2<T>(T(0.5), T(0.5)));
+    CHECK(c.radius == T(0));
+    for (T x : {T(0), T(1)})
+        for (T y : {T(0), T(1)}) CHECK(apse::detail::concentric_to_disk(vec2<T>(x, y)).radius == T(1));
+    const int n = 64;
+    for (int i = 0; i <= n; ++i) {
+        for (int j = 0; j <= n; ++j) {
+            const vec2<T> u(T(i) / T(n), T(j) / T(n));
+            const auto p = apse::detail::concentric_to_disk(u);
+            CHECK(p.radius >= T(0));
+            CHECK(p.radius <= T(1));
+            CHECK(p.turns >= T(0));
+            CHECK(p.turns < T(1));
+            // the square's boundary goes to the unit circle
+            if (i == 0 || j == 0 || i == n || j == n) CHECK(p.radius == T(1));
+            const vec2<T> back = apse::detail::concentric_from_disk(p.radius, p.turns);
+            CHECK(std::fabs(back.x - u.x) <= tol);
+            CHECK(std::fabs(back.y - u.y) <= tol);
+        }
+    }
+    // out of the domain: clamped, NaN -> 0
+    const auto q = apse::detail::concentric_to_disk(vec2<T>(T(2), std::numeric_limits<T>::quiet_NaN()));
+    CHECK(apse::is_finite(q.radius));
+    CHECK(apse::is_finite(q.turns));
+    const vec2<T> r = apse::detail::concentric_from_disk(T(3), T(-0.25));  // clamped, reduced mod 1
+    CHECK(r.x == T(0.5));
+    CHECK(r.y == T(0));
+}
+
+TEMPLATE_TEST_CASE("concentric map is area-preserving and continuous", "[area][concentric]", float, double) {
+    using T = TestType;
+    // Jacobian of u -> disk point by central differences: |det| = pi (area pi from area 1)
+    std::mt19937_64 rng(1);
+    std::uniform_real_distribution<double> u(0.02, 0.98);
+    const double h = sizeof(T) == 8 ? 1e-6 : 1e-3;
+    for (int k = 0; k < 1000; ++k) {
+        const double x = u(rng), y = u(rng);
+        if (std::fabs(std::fabs(x - 0.5) - std::fabs(y - 0.5)) < 2 * h) continue;  // sector seams
+        const auto f = [](double a, double b) {
+            return vec2<double>(disk_point(apse::detail::concentric_to_disk(vec2<T>(T(a), T(b)))));
+        };
+        const vec2<double> dx = (f(x + h, y) - f(x - h, y)) / (2 * h);
+        const vec2<double> dy = (f(x, y + h) - f(x, y - h)) / (2 * h);
+        CHECK(std::fabs(dx.x * dy.y - dx.y * dy.x) == Approx(M_PI).epsilon(sizeof(T) == 8 ? 1e-7 : 2e-2));
+    }
+    // continuity across the sector seams (the diagonals) and at turns = 0
+    for (double t = 0.01; t < 1; t += 0.01) {
+        for (double s : {-1.0, 1.0}) {
+            const double x = 0.5 + 0.5 * t, y = 0.5 + s * 0.5 * t;
+            const double e = 1e-4;
+            const auto a = disk_point(apse::detail::concentric_to_disk(vec2<T>(T(x), T(y - e))));
+            const auto b = disk_point(apse::detail::concentric_to_disk(vec2<T>(T(x), T(y + e))));
+            CHECK(glm::length(vec2<double>(a - b)) < 1e-3);
+        }
+    }
+}
+
+TEMPLATE_TEST_CASE("DiskAreaSampler: samples on the disk, pdf consistent, inverse", "[area]", float, double) {
+    using T = TestType;
+    std::mt19937_64 rng(2);
+    std::uniform_real_distribution<double> u(0, 1);
+    const double tol = sizeof(T) == 8 ? 1e-9 : 2e-3;
+    for (int cfg = 0; cfg < 30; ++cfg) {
+        const vec3<T> c(T(u(rng) * 2 - 1), T(u(rng) * 2 - 1), T(u(rng) * 2 - 1));
+        const vec3<T> n = T(0.5 + 3 * u(rng)) * glm::normalize(vec3<T>(T(u(rng) - 0.5), T(u(rng) - 0.5), T(u(rng) - 0.5)));
+        const T r = T(0.2 + u(rng));
+        const vec3<T> o(T(u(rng) * 6 - 3), T(u(rng) * 6 - 3), T(u(rng) * 6 - 3));
+        const apse::DiskAreaSampler<T> s(o, c, n, r);
+        REQUIRE_FALSE(s.empty());
+        const auto ellipse = apse::project_disk(o, c, n, r);
+        for (int k = 0; k < 200; ++k) {
+            const vec2<T> uu(T(0.02 + 0.96 * u(rng)), T(0.02 + 0.96 * u(rng)));
+            const auto smp = s.sample(uu);
+            CHECK(smp.pdf > T(0));
+            CHECK(std::fabs(glm::length(smp.direction) - T(1)) <= T(8) * apse::epsilon<T>());
+            // the direction hits the disk: pdf() agrees, and the spherical ellipse contains it
+            const T p = s.pdf(smp.direction);
+            CHECK(double(p) == Approx(double(smp.pdf)).epsilon(tol));
+            const vec2<T> back = s.invert(smp.direction);
+            CHECK(std::fabs(double(back.x - uu.x)) <= 1e3 * tol);
+            CHECK(std::fabs(double(back.y - uu.y)) <= 1e3 * tol);
+            if (k % 4 == 0) CHECK(ellipse.contains(smp.direction));
+        }
+        // directions that miss: pdf 0
+        CHECK(s.pdf(-glm::normalize(c - o)) == T(0));
+    }
+}
+
+TEMPLATE_TEST_CASE("DiskAreaSampler: E[1/pdf] = Omega and the pdf integrates to 1", "[area]", float, double) {
+    using T = TestType;
+    struct Cfg {
+        vec3<double> o, c, n;
+        double r;
+    };
+    const Cfg cfgs[] = {
+        {{0.3, 0.2, 1.0}, {0, 0, 0}, {0, 0, 1}, 1.0},
+        {{2.5, -1.0, 0.4}, {0, 0, 0}, {0, 0, 1}, 1.0},
+        {{0.1, 3.0, 2.0}, {0.5, 0.5, -0.5}, {1, 2, -0.5}, 0.7},
+        {{0.0, 0.0, -5.0}, {0.2, 0.1, 0.0}, {0, 0, 3}, 2.0},  // behind (two-sided)
+    };
+    const int n = 256;  // n x n stratified samples
+    for (const Cfg& cf : cfgs) {
+        const vec3<T> o(cf.o), c(cf.c), nn(cf.n);
+        const apse::DiskAreaSampler<T> s(o, c, nn, T(cf.r));
+        const double omega = disk_omega_grid(cf.o, cf.c, cf.n, cf.r);
+        std::mt19937_64 rng(4);
+        std::uniform_real_distribution<double> u(0, 1);
+        double sum = 0, sum2 = 0;
+        for (int i = 0; i < n; ++i) {
+            for (int j = 0; j < n; ++j) {
+                const vec2<T> uu(T((i + u(rng)) / n), T((j + u(rng)) / n));
+                const auto smp = s.sample(uu);
+                REQUIRE(smp.pdf > T(0));
+                const double w = 1.0 / double(smp.pdf);
+                sum += w;
+                sum2 += w * w;
+            }
+        }
+        const double mean = sum / (n * n);
+        const double se = std::sqrt(std::fmax(sum2 / (n * n) - mean * mean, 0.0) / (n * n));
+        INFO("omega " << omega << " estimate " << mean << " standard error (iid bound) " << se);
+        CHECK(std::fabs(mean - omega) <= 5 * se + 1e-5 * omega);
+        // int pdf d(omega) = 1: directions uniform in a cap around the ellipse's centre that
+        // contains the whole ellipse, pdf() averaged times the cap's solid angle
+        const auto e = apse::project_disk(o, c, nn, T(cf.r));
+        const double cap = std::fmin(double(e.alpha) * 1.2, M_PI / 2);
+        const double cap_omega = 2 * M_PI * (1 - std::cos(cap));
+        double acc = 0;
+        const int m = 400;
+        for (int i = 0; i < m; ++i) {
+            for (int j = 0; j < m; ++j) {
+                const double z = 1 - (1 - std::cos(cap)) * (i + u(rng)) / m, phi = 2 * M_PI * (j + u(rng)) / m;
+                const double st = std::sqrt(1 - z * z);
+                const vec3<double> l(st * std::cos(phi), st * std::sin(phi), z);
+                const vec3<T> d = e.to_world(vec3<T>(l));
+                acc += double(s.pdf(d));
+            }
+        }
+        CHECK(acc / (m * m) * cap_omega == Approx(1.0).epsilon(0.02));
+    }
+}
+
+TEMPLATE_TEST_CASE("DiskAreaSampler: degenerate input gives an empty sampler", "[area][robustness]", float, double) {
+    using T = TestType;
+    const T nan = std::numeric_limits<T>::quiet_NaN(), inf = std::numeric_limits<T>::infinity();
+    const vec3<T> o(T(0.2), T(0.1), T(1)), c(0, 0, 0), n(0, 0, 1);
+    const apse::DiskAreaSampler<T> bad[] = {
+        {vec3<T>(T(0.5), 0, 0), c, n, T(1)},  // o in the plane (on the disk)
+        {vec3<T>(3, 0, 0), c, n, T(1)},       // in the plane, outside
+        {o, c, n, T(0)},
+        {o, c, n, T(-1)},
+        {o, c, n, nan},
+        {o, c, n, inf},
+        {o, c, vec3<T>(0), T(1)},
+        {o, c, vec3<T>(nan, 0, 1), T(1)},
+        {vec3<T>(inf, 0, 1), c, n, T(1)},
+        {o, vec3<T>(0, nan, 0), n, T(1)},
+    };
+    for (const auto& s : bad) {
+        CHECK(s.empty());
+        const auto smp = s.sample(vec2<T>(T(0.3), T(0.7)));
+        CHECK(smp.pdf == T(0));
+        CHECK(std::fabs(glm::length(smp.direction) - T(1)) <= T(4) * apse::epsilon<T>());
+        CHECK(s.pdf(vec3<T>(0, 0, -1)) == T(0));
+        const vec2<T> uu = s.invert(vec3<T>(0, 0, -1));
+        CHECK(apse::is_finite(uu.x + uu.y));
+    }
+    const apse::DiskAreaSampler<T> ok(o, c, T(1e-30f) * n, T(1));  // any normal length
+    CHECK_FALSE(ok.empty());
+    CHECK(ok.pdf(vec3<T>(nan)) == T(0));
+    CHECK(ok.pdf(vec3<T>(0)) == T(0));
+    CHECK(ok.pdf(vec3<T>(0, 0, 1)) == T(0));  // away from the disk
+    CHECK(ok.pdf(-o) > T(0));                  // towards the centre
+    const vec2<T> centre = ok.invert(c - o);
+    CHECK(std::fabs(centre.x - T(0.5)) <= T(1e-5));
+    CHECK(std::fabs(centre.y - T(0.5)) <= T(1e-5));
+}
