@@ -1,0 +1,413 @@
+// apse — area-preserving parameterizations for spherical ellipses.
+// SPDX-License-Identifier: MIT
+#pragma once
+
+/// @file maps/tabulated.hpp
+/// `TabulatedMap<T>` and `TabulatedLdRadialMap<T>`: the paper's tabulated radial / LD-radial
+/// variants (authors' code: `polartab` / `concentrictab`, MATH.md §6), redone so that they are
+/// **unbiased**: the pdf they report is exactly the density they draw from (the authors' version
+/// rejects samples outside the ellipse, counts them as zero and reports 1/Omega: biased, §6, §11.4).
+///
+/// How it works (*derived*, see docs/tabulated.md). In one quadrant, parametrise the boundary by
+/// the orthographic eccentric anomaly tau (tan phi = (b/a) tan tau, a = sin alpha, b = sin beta,
+/// detail/cumulative_area.hpp), and tau by a "Lambert anomaly" lambda in [0, pi/2]:
+/// tan tau = kappa tan lambda, kappa = cos(alpha/2)/cos(beta/2). The exact area density in lambda,
+///     dOmega_r/dlambda = a b kappa / ((1 + C(tau)) (cos^2 lambda + kappa^2 sin^2 lambda)),
+/// C(tau) = cos theta_max = sqrt(cos^2 alpha cos^2 tau + cos^2 beta sin^2 tau), is constant for
+/// caps and for small ellipses and varies smoothly and by little otherwise. A table holds its
+/// normalised CDF at N equally spaced lambda for a grid of shapes (1 − sqrt(cos alpha), beta/alpha); a map
+/// blends the four rows around its own shape bilinearly (a convex combination of CDFs is a CDF
+/// and its density is the same combination of densities), draws lambda from the resulting
+/// piecewise-linear CDF (a walk from the uniform guess: O(1) expected, O(N) worst), and then
+/// theta exactly as the radial map (cos theta uniform between cos theta_max(phi) and 1). Every
+/// sample is inside the ellipse by construction; one point of the square gives one direction (no
+/// rejection). The density drawn from, in solid angle, is
+///     pdf(w) = p_lambda(lambda) / (4 (1 − cos theta_max) dphi/dlambda)
+///            = p_lambda(lambda) (1 + C) kappa / (4 a b (kappa^2 cos^2 tau + sin^2 tau)),
+/// with p_lambda = (Delta CDF of the bin)/(bin width): no solid angle, no elliptic integral and
+/// no table accuracy enters the unbiasedness — the table's quality only sets how close pdf is to
+/// 1/Omega (measured max |pdf Omega − 1| in docs/tabulated.md: 0.44 % for the default table).
+///
+/// Why a user-built table object (design choice): the table's entries are integrals of the
+/// closed-form density above, so apse builds them itself (`TabulationTable::build()`, ~15 ms,
+/// Gauss–Legendre per bin, no elliptic integrals) instead of shipping a generated array; the
+/// object is plain data (trivially copyable, no pointers), so a GPU user copies it once to device
+/// memory and passes a `TabulationView` pointing there (namespace-scope constexpr arrays would
+/// need a separate `__constant__` copy for device code). Entries are stored as float for both
+/// T = float and double: any monotone table gives an exact sampler, and float entries are ~1e-7
+/// from the exact CDF, far below the tabulation error. Default size: 128 bins × 17 alpha nodes ×
+/// 9 ratio nodes = 19 737 floats = 77 KB.
+
+#include <cmath>
+
+#include "../config.hpp"
+#include "../math.hpp"
+#include "../sample.hpp"
+#include "../spherical_ellipse.hpp"
+#include "../detail/concentric.hpp"
+#include "../detail/cumulative_area.hpp"
+#include "../detail/glm.hpp"
+#include "../detail/quadrant.hpp"
+
+namespace apse {
+
+/// A non-owning view of a tabulation table (see TabulationTableN): `cdf` points at
+/// `alpha_nodes * ratio_nodes` rows of `bins + 1` floats each, row (i, j) (alpha node i, ratio
+/// node j) at offset (i * ratio_nodes + j) * (bins + 1); each row is a CDF (0 first, 1 last,
+/// increasing). In device code `cdf` must point to device memory. A view with a null pointer or
+/// fewer than 1 bin / 2 nodes makes every map built from it empty (pdf 0).
+struct TabulationView {
+    const float* cdf;  ///< rows of normalised cumulative quadrant area in lambda
+    int bins;          ///< N: bins per row (equal width pi/(2N) in lambda)
+    int alpha_nodes;   ///< nodes of x = 1 − sqrt(cos alpha) in [0, 1] (equally spaced)
+    int ratio_nodes;   ///< nodes of y = beta/alpha in [0, 1] (equally spaced)
+};
+
+namespace detail {
+
+/// Unnormalised area density of the quadrant in the Lambert anomaly lambda (maps/tabulated.hpp
+/// file comment), divided by the constant a b: kappa / ((1 + C(tau)) (cos^2 lambda + kappa^2
+/// sin^2 lambda)), for cos alpha = ca, cos beta = cb, kappa = sqrt((1 + ca)/(1 + cb)), lambda in
+/// [0, pi/2]. Double precision (table construction only).
+APSE_FUNC double tabulated_lambda_density(double lambda, double ca, double cb, double kappa) noexcept {
+    const double cl = std::cos(lambda), sl = std::sin(lambda);
+    const double n2 = cl * cl + kappa * kappa * sl * sl;
+    const double ct2 = cl * cl / n2, st2 = kappa * kappa * sl * sl / n2;
+    const double c = std::sqrt(ca * ca * ct2 + cb * cb * st2);
+    return kappa / ((1.0 + c) * n2);
+}
+
+/// Fills one row (bins + 1 floats) of the tabulation table for the shape (alpha, beta): the
+/// normalised cumulative integral of tabulated_lambda_density at lambda_k = k pi/(2 bins),
+/// 5-point Gauss–Legendre per bin (the float entries agree with a 64 times finer quadrature to
+/// within one float rounding, 6e-8, for shapes up to the hemisphere).
+APSE_FUNC void tabulated_fill_row(float* row, int bins, double alpha, double beta) noexcept {
+    const double ca = std::cos(alpha), cb = std::cos(beta);
+    const double kappa = std::sqrt((1.0 + ca) / (1.0 + cb));
+    const double x[5] = {0.0, 0.5384693101056831, -0.5384693101056831, 0.9061798459386640, -0.9061798459386640};
+    const double w[5] = {0.5688888888888889, 0.4786286704993665, 0.4786286704993665, 0.2369268850561891,
+                         0.2369268850561891};
+    const double h = 1.5707963267948966 / bins;
+    double total = 0.0;
+    // first pass: the total; second pass: the normalised running sum (deterministic, no storage)
+    for (int pass = 0; pass < 2; ++pass) {
+        double sum = 0.0;
+        if (pass == 1) row[0] = 0.0f;
+        for (int k = 0; k < bins; ++k) {
+            const double mid = (k + 0.5) * h;
+            double s = 0.0;
+            for (int g = 0; g < 5; ++g) s += w[g] * tabulated_lambda_density(mid + 0.5 * h * x[g], ca, cb, kappa);
+            sum += 0.5 * h * s;
+            if (pass == 1) row[k + 1] = k + 1 == bins ? 1.0f : float(sum / total);
+        }
+        total = sum;
+    }
+}
+
+}  // namespace detail
+
+/// The tabulation table shared by all TabulatedMap / TabulatedLdRadialMap instances (MATH.md §6,
+/// redone unbiased; maps/tabulated.hpp file comment): Bins + 1 CDF entries in lambda for each of
+/// AlphaNodes × RatioNodes shapes: sqrt(cos alpha) = 1 − i/(AlphaNodes − 1) (nodes dense near the
+/// hemisphere, where the density changes fastest with the shape), beta = alpha j/(RatioNodes − 1).
+/// Plain data, trivially copyable (copy it to device memory as is); memory
+/// AlphaNodes × RatioNodes × (Bins + 1) × 4 bytes. Build it once with build() before use.
+template <int Bins, int AlphaNodes, int RatioNodes> struct TabulationTableN {
+    static_assert(Bins >= 1 && AlphaNodes >= 2 && RatioNodes >= 2, "apse: table too small");
+    static constexpr int bins = Bins;                ///< N
+    static constexpr int alpha_nodes = AlphaNodes;   ///< nodes of 1 − sqrt(cos alpha)
+    static constexpr int ratio_nodes = RatioNodes;   ///< nodes of beta/alpha
+    static constexpr int size = AlphaNodes * RatioNodes * (Bins + 1);  ///< number of floats
+
+    float cdf[size];  ///< the rows, layout as TabulationView
+
+    /// Computes every row (double-precision quadrature of the closed-form density; no elliptic
+    /// integrals). Cost ~ size × 10 evaluations (~15 ms for the default size). Host or device.
+    APSE_FUNC void build() noexcept {
+        for (int i = 0; i < AlphaNodes; ++i) {
+            const double x = double(i) / double(AlphaNodes - 1), sc = 1.0 - x;  // sqrt(cos alpha)
+            const double alpha = i == AlphaNodes - 1 ? 1.5707963267948966 : std::acos(sc * sc);
+            for (int j = 0; j < RatioNodes; ++j) {
+                const double beta = alpha * double(j) / double(RatioNodes - 1);
+                detail::tabulated_fill_row(cdf + (i * RatioNodes + j) * (Bins + 1), Bins, alpha, beta);
+            }
+        }
+    }
+
+    /// A view of this table (valid while the table lives; for device use make a view of the
+    /// device copy instead: `TabulationView{device_ptr->cdf, bins, alpha_nodes, ratio_nodes}`).
+    APSE_FUNC TabulationView view() const noexcept { return {cdf, Bins, AlphaNodes, RatioNodes}; }
+};
+
+/// The default table: 128 bins × 17 × 9 shapes = 19 737 floats = 77 KB; max |pdf Omega − 1| =
+/// 0.44 % over all shapes (docs/tabulated.md; the error is ~0.56/N, set by the bins).
+using TabulationTable = TabulationTableN<128, 17, 9>;
+
+/// Tabulated radial map (MATH.md §4 + §6, unbiased; file comment): u1 picks the quadrant and the
+/// Lambert anomaly from the blended table CDF, u2 the polar angle exactly as RadialMap. Not
+/// area-preserving (nearly: pdf Omega within the table's error of 1), but the reported pdf is
+/// exactly its density. Per shading point: no elliptic integral, no Omega; per sample: a short
+/// table walk (rarely more than the first guess) and one sin/cos. Holds a pointer into the table
+/// (the table must outlive the map). Trivially copyable.
+template <class T> class TabulatedMap {
+public:
+    using vec2 = glm::vec<2, T>;
+    using vec3 = glm::vec<3, T>;
+
+    /// Builds the map for `ellipse` with the table `table` (set-up: the ellipse's cumulative-area
+    /// constants, kappa, the four blended rows and their weights; one sqrt and a few divisions).
+    /// An empty ellipse or an invalid view gives an empty map (every sample has pdf 0).
+    APSE_FUNC TabulatedMap(const SphericalEllipse<T>& ellipse, const TabulationView& table) noexcept
+        : ellipse_(ellipse), areas_(detail::EllipseAreas<T>::make(ellipse)), bins_(table.bins) {
+        for (int r = 0; r < 4; ++r) { rows_[r] = table.cdf; weights_[r] = T(0); }
+        valid_ = !ellipse.empty() && table.cdf != nullptr && table.bins >= 1 && table.alpha_nodes >= 2 &&
+                 table.ratio_nodes >= 2 && ellipse.alpha > T(0);
+        kappa_ = std::sqrt((T(1) + areas_.ca) / (T(1) + areas_.cb));
+        kappa2_ = kappa_ * kappa_;
+        bin_width_ = half_pi_v<T> / T(bins_ > 0 ? bins_ : 1);
+        pdf_scale_ = T(0);
+        if (!valid_) return;
+        // pdf = (dF N) kappa (1 + C) / (2 pi a b (kappa^2 ct^2 + st^2)): the constant part
+        // kappa/(2 pi a b), divided in two steps so that a b does not underflow and the result
+        // does not overflow for the smallest ellipses (it is ~1/Omega; dF N is ~1).
+        pdf_scale_ = ((kappa_ / two_pi_v<T>) / areas_.a) / areas_.b;
+        if (!is_finite(pdf_scale_) || !(pdf_scale_ > T(0))) { valid_ = false; pdf_scale_ = T(0); return; }
+        const T fx = clamp(T(1) - std::sqrt(areas_.ca), T(0), T(1)) * T(table.alpha_nodes - 1);
+        const T fy = clamp(ellipse.beta / ellipse.alpha, T(0), T(1)) * T(table.ratio_nodes - 1);
+        int i = int(fx), j = int(fy);
+        if (i > table.alpha_nodes - 2) i = table.alpha_nodes - 2;
+        if (j > table.ratio_nodes - 2) j = table.ratio_nodes - 2;
+        const T wx = clamp(fx - T(i), T(0), T(1)), wy = clamp(fy - T(j), T(0), T(1));
+        const int stride = bins_ + 1;
+        rows_[0] = table.cdf + (i * table.ratio_nodes + j) * stride;
+        rows_[1] = rows_[0] + stride;                          // (i, j + 1)
+        rows_[2] = rows_[0] + table.ratio_nodes * stride;      // (i + 1, j)
+        rows_[3] = rows_[2] + stride;                          // (i + 1, j + 1)
+        weights_[0] = (T(1) - wx) * (T(1) - wy);
+        weights_[1] = (T(1) - wx) * wy;
+        weights_[2] = wx * (T(1) - wy);
+        weights_[3] = wx * wy;
+    }
+
+    /// The ellipse this map samples.
+    APSE_FUNC const SphericalEllipse<T>& ellipse() const noexcept { return ellipse_; }
+
+    /// True if the map cannot sample (empty ellipse or invalid table view): pdf 0 everywhere.
+    APSE_FUNC bool empty() const noexcept { return !valid_; }
+
+    /// Direction for the point u of the unit square (file comment): world-space unit vector
+    /// inside the ellipse, with its exact density in solid angle (within the table's error of
+    /// 1/Omega; never an estimate). u is clamped into [0, 1]^2; a NaN coordinate, an empty
+    /// ellipse or an invalid table gives pdf 0 (and the centre direction).
+    /// `iterations` receives the number of table-walk steps (0 when the uniform guess was the
+    /// bin; interface of the exact maps' sample(u, iterations)).
+    APSE_FUNC DirectionSample<T> sample(const vec2& u, int& iterations) const noexcept {
+        iterations = 0;
+        bool ok = valid_;
+        const T u1 = detail::clamp_unit(u.x, ok), u2 = detail::clamp_unit(u.y, ok);
+        if (!ok) return {ellipse_.z, T(0)};
+        T pdf = T(0);
+        const vec3 l = local_direction(u1, u2, pdf, iterations);
+        return {ellipse_.to_world(l), pdf};
+    }
+
+    /// sample(u, iterations) without the step count.
+    APSE_FUNC DirectionSample<T> sample(const vec2& u) const noexcept {
+        int iterations = 0;
+        return sample(u, iterations);
+    }
+
+    /// The point of the unit square that sample() maps to the world-space direction `d` (any
+    /// non-zero length): exact inverse inside the ellipse up to rounding (~1e-6 float, ~1e-14
+    /// double; u1 is ambiguous on the +x seam (0 or 1) and undefined at the centre). A direction
+    /// outside gives the point whose image is the boundary point at the same azimuth (u2 = 1);
+    /// a zero/NaN/infinite direction or an empty map gives (0, 0).
+    APSE_FUNC vec2 invert(const vec3& d) const noexcept {
+        if (!valid_) return vec2(T(0));
+        const vec3 l = ellipse_.to_local(d);
+        const T len = std::sqrt(l.x * l.x + l.y * l.y + l.z * l.z);
+        if (!(len > T(0)) || !is_finite(len)) return vec2(T(0));
+        return local_coordinates(l / len);
+    }
+
+    /// Density of sample() at the world-space direction `d`, in solid angle (the same formula
+    /// as sample() reports, from the direction's azimuth): > 0 inside the ellipse (boundary
+    /// included), 0 outside, for an empty map, or a zero/NaN direction.
+    APSE_FUNC T pdf(const vec3& d) const noexcept {
+        if (!valid_ || !ellipse_.contains(d)) return T(0);
+        const vec3 l = ellipse_.to_local(d);
+        const Azimuth az = azimuth_of(std::fabs(l.x), std::fabs(l.y));
+        const T lo = cdf_at(az.bin), hi = cdf_at(az.bin + 1);
+        return density(hi - lo, az.ct, az.st, areas_.c_max(az.ct, az.st));
+    }
+
+    /// Building block shared with TabulatedLdRadialMap: the local-frame direction for (u1, u2)
+    /// in [0, 1]^2 (not checked), its solid-angle density in `pdf` and the table-walk steps in
+    /// `steps`.
+    APSE_FUNC vec3 local_direction(T u1, T u2, T& pdf, int& steps) const noexcept {
+        const detail::QuadrantFold<T> fold = detail::fold_quadrant(u1);
+        const T f = fold.fraction;
+        // the bin k with F(k) <= f < F(k + 1) (F(0) = 0, F(N) = 1 up to rounding; f >= F(N) gives
+        // the last bin): the blended CDF is within a few % of linear in lambda, so start at the
+        // bin of the uniform CDF and walk (measured: <= 0.5 steps on average, at most 3; the
+        // loops are bounded by N in any case).
+        int lo = int(f * T(bins_));
+        lo = lo < 0 ? 0 : (lo > bins_ - 1 ? bins_ - 1 : lo);
+        T f0 = cdf_at(lo), f1 = cdf_at(lo + 1);
+        steps = 0;
+        while (lo > 0 && f0 > f) {
+            --lo;
+            ++steps;
+            f1 = f0;
+            f0 = cdf_at(lo);
+        }
+        while (lo < bins_ - 1 && !(f < f1)) {
+            ++lo;
+            ++steps;
+            f0 = f1;
+            f1 = cdf_at(lo + 1);
+        }
+        const T df = f1 - f0;
+        const T s = df > T(0) ? clamp((f - f0) / df, T(0), T(1)) : T(0);
+        const T lambda = (T(lo) + s) * bin_width_;
+        // tan tau = kappa tan lambda; (cos tau, sin tau) = (cos lambda, kappa sin lambda)/n
+        const T cl = max_of(std::cos(lambda), T(0)), sl = max_of(std::sin(lambda), T(0));
+        const T px = cl, py = kappa_ * sl, n = std::sqrt(px * px + py * py);
+        const T ct = px / n, st = py / n;
+        const T c = areas_.c_max(ct, st);
+        pdf = density(df, ct, st, c);
+        // radial part exactly as RadialMap: 1 − cos theta = u2 (1 − C), 1 − C = r^2/(1 + C)
+        const T ax = areas_.a * ct, by = areas_.b * st;
+        const T r2 = ax * ax + by * by, r = std::sqrt(r2);
+        const T v = u2 * (r2 / (T(1) + c));
+        const T sin_theta = std::sqrt(v * (T(2) - v));
+        const T scale = r > T(0) ? sin_theta / r : T(0);
+        return detail::place_in_quadrant(fold.quadrant, ax * scale, by * scale, (T(1) - u2) + u2 * c);
+    }
+
+    /// Building block shared with TabulatedLdRadialMap: (u1, u2) of the unit local direction
+    /// `l` (clamped to [0, 1]^2).
+    APSE_FUNC vec2 local_coordinates(const vec3& l) const noexcept {
+        const int q = detail::quadrant_of(l.x, l.y);
+        const T x = std::fabs(l.x), y = std::fabs(l.y);
+        const Azimuth az = azimuth_of(x, y);
+        const T f0 = cdf_at(az.bin), f1 = cdf_at(az.bin + 1);
+        const T s = clamp(az.lambda / bin_width_ - T(az.bin), T(0), T(1));
+        const T f = clamp(f0 + s * (f1 - f0), T(0), T(1));
+        const T u1 = detail::unfold_quadrant_fraction(q, f);
+        T u2 = T(1);
+        if (l.z > T(0)) {
+            const T c = areas_.c_max(az.ct, az.st);
+            const T ax = areas_.a * az.ct, by = areas_.b * az.st;
+            const T one_minus_z = (x * x + y * y) / (T(1) + l.z);
+            const T one_minus_c = (ax * ax + by * by) / (T(1) + c);
+            u2 = one_minus_c > T(0) ? clamp(one_minus_z / one_minus_c, T(0), T(1)) : T(0);
+        }
+        return vec2(clamp(u1, T(0), T(1)), u2);
+    }
+
+private:
+    struct Azimuth {
+        T ct, st;  ///< cos tau, sin tau
+        T lambda;  ///< Lambert anomaly in [0, pi/2]
+        int bin;   ///< its bin, in [0, N − 1]
+    };
+
+    /// tau and lambda of the first-quadrant local direction (x, y) (x, y >= 0).
+    APSE_FUNC Azimuth azimuth_of(T x, T y) const noexcept {
+        // tan tau = (a/b) tan phi: (cos tau, sin tau) ∝ ((b/a) x, y)
+        const T bx = areas_.ba * x;
+        const T n = std::sqrt(bx * bx + y * y);
+        Azimuth az;
+        az.ct = n > T(0) ? bx / n : T(1);
+        az.st = n > T(0) ? y / n : T(0);
+        az.lambda = clamp(std::atan2(az.st, kappa_ * az.ct), T(0), half_pi_v<T>);
+        int k = int(az.lambda / bin_width_);
+        az.bin = k < 0 ? 0 : (k > bins_ - 1 ? bins_ - 1 : k);
+        return az;
+    }
+
+    /// The blended CDF at node k.
+    APSE_FUNC T cdf_at(int k) const noexcept {
+        return weights_[0] * T(rows_[0][k]) + weights_[1] * T(rows_[1][k]) + weights_[2] * T(rows_[2][k]) +
+               weights_[3] * T(rows_[3][k]);
+    }
+
+    /// Solid-angle density for a bin of blended mass df at (cos tau, sin tau), C = cos theta_max
+    /// (file comment).
+    APSE_FUNC T density(T df, T ct, T st, T c) const noexcept {
+        const T p = ((df * T(bins_)) * (T(1) + c) / (kappa2_ * ct * ct + st * st)) * pdf_scale_;
+        return is_finite(p) ? max_of(p, T(0)) : T(0);
+    }
+
+    SphericalEllipse<T> ellipse_;
+    detail::EllipseAreas<T> areas_;
+    const float* rows_[4];
+    T weights_[4];
+    int bins_;
+    T kappa_, kappa2_, bin_width_, pdf_scale_;
+    bool valid_;
+};
+
+/// Tabulated LD-radial map (MATH.md §4 + §6, unbiased): the Shirley–Chiu concentric map first,
+/// then TabulatedMap with u1 = angle/(2 pi), u2 = radius^2 (as LdRadialMap over RadialMap).
+/// Continuous on the closed square; the same density, pdf, accuracy and table as TabulatedMap.
+/// Trivially copyable.
+template <class T> class TabulatedLdRadialMap {
+public:
+    using vec2 = glm::vec<2, T>;
+    using vec3 = glm::vec<3, T>;
+
+    /// Builds the map (as TabulatedMap; empty ellipse or invalid view: pdf 0 everywhere).
+    APSE_FUNC TabulatedLdRadialMap(const SphericalEllipse<T>& ellipse, const TabulationView& table) noexcept
+        : radial_(ellipse, table) {}
+
+    /// The ellipse this map samples.
+    APSE_FUNC const SphericalEllipse<T>& ellipse() const noexcept { return radial_.ellipse(); }
+
+    /// True if the map cannot sample (pdf 0 everywhere).
+    APSE_FUNC bool empty() const noexcept { return radial_.empty(); }
+
+    /// Direction for u in [0, 1]^2 (clamped) with its exact solid-angle density; NaN, empty
+    /// ellipse or invalid table: pdf 0 and the centre direction.
+    /// `iterations`: table-walk steps, as TabulatedMap::sample.
+    APSE_FUNC DirectionSample<T> sample(const vec2& u, int& iterations) const noexcept {
+        iterations = 0;
+        bool ok = !radial_.empty();
+        const vec2 uc(detail::clamp_unit(u.x, ok), detail::clamp_unit(u.y, ok));
+        if (!ok) return {ellipse().z, T(0)};
+        const detail::ConcentricPolar<T> disk = detail::concentric_to_disk(uc);
+        T pdf = T(0);
+        const vec3 l = radial_.local_direction(disk.turns, disk.radius * disk.radius, pdf, iterations);
+        return {ellipse().to_world(l), pdf};
+    }
+
+    /// sample(u, iterations) without the step count.
+    APSE_FUNC DirectionSample<T> sample(const vec2& u) const noexcept {
+        int iterations = 0;
+        return sample(u, iterations);
+    }
+
+    /// Inverse of sample() (as TabulatedMap::invert, then the inverse concentric map; the angle
+    /// is undefined at the centre). Zero/NaN/infinite direction or empty map: (0, 0).
+    APSE_FUNC vec2 invert(const vec3& d) const noexcept {
+        if (radial_.empty()) return vec2(T(0));
+        const vec3 l = ellipse().to_local(d);
+        const T len = std::sqrt(l.x * l.x + l.y * l.y + l.z * l.z);
+        if (!(len > T(0)) || !is_finite(len)) return vec2(T(0));
+        const vec2 polar = radial_.local_coordinates(l / len);
+        return detail::concentric_from_disk(std::sqrt(polar.y), polar.x);
+    }
+
+    /// Density of sample() at `d` in solid angle (the concentric map preserves area, so it is
+    /// TabulatedMap's); 0 outside.
+    APSE_FUNC T pdf(const vec3& d) const noexcept { return radial_.pdf(d); }
+
+    /// The underlying tabulated radial map.
+    APSE_FUNC const TabulatedMap<T>& radial() const noexcept { return radial_; }
+
+private:
+    TabulatedMap<T> radial_;
+};
+
+}  // namespace apse
