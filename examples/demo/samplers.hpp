@@ -1,0 +1,133 @@
+// apse demo — one adapter over every disk-light sampler the demo compares.
+// SPDX-License-Identifier: MIT
+#pragma once
+
+/// @file samplers.hpp
+/// The samplers compared, each wrapped in a *factory* that builds the per-shading-point sampler
+/// (the set-up a renderer does once per shading point) and a uniform `LightSample` result:
+/// direction, solid-angle pdf (0 = no sample: skip it), distance to the disk.
+
+#include <array>
+#include <memory>
+#include <vector>
+
+#include <apse/apse.hpp>
+
+// ---- The tabulated map: the ONE place that adds it (maps/tabulated.hpp, issue in progress). ----
+#if __has_include(<apse/maps/tabulated.hpp>) && !defined(APSE_DEMO_NO_TABULATED)
+#include <apse/maps/tabulated.hpp>
+#define APSE_DEMO_HAS_TABULATED 1
+#else
+#define APSE_DEMO_HAS_TABULATED 0
+#endif
+
+namespace demo {
+
+using vec2 = glm::vec2;
+using vec3 = glm::vec3;
+
+/// A disk light: centre, normal (unit), radius, emitted radiance (two-sided, invisible).
+struct Disk {
+    vec3 center, normal;
+    float radius, Le;
+};
+
+/// One light sample from a shading point.
+struct LightSample {
+    vec3 direction;
+    float pdf;       ///< solid angle; 0 = no sample
+    float distance;  ///< to the disk along direction
+};
+
+enum class Kind { area, gamito, radial, ld_radial, parallel, tabulated };
+
+inline const char* kind_name(Kind k) {
+    switch (k) {
+    case Kind::area: return "area";
+    case Kind::gamito: return "Gamito";
+    case Kind::radial: return "radial";
+    case Kind::ld_radial: return "LD-radial";
+    case Kind::parallel: return "parallel";
+    case Kind::tabulated: return "tabulated";
+    }
+    return "?";
+}
+
+/// The samplers of the comparison, in display order (tabulated only when available).
+inline std::vector<Kind> all_kinds() {
+    std::vector<Kind> k{Kind::area, Kind::gamito, Kind::radial, Kind::ld_radial, Kind::parallel};
+    if (APSE_DEMO_HAS_TABULATED) k.push_back(Kind::tabulated);
+    return k;
+}
+
+/// Wraps a sampler with `sample(u) -> DirectionSample<float>` into LightSample (the distance is
+/// the ray–plane distance, the same computation for every sampler).
+template <class S> struct Wrapped {
+    S s;
+    vec3 to_center;  // center − o
+    vec3 normal;
+    LightSample sample(const vec2& u) const {
+        const apse::DirectionSample<float> d = s.sample(u);
+        const float t = glm::dot(to_center, normal) / glm::dot(d.direction, normal);
+        if (!(d.pdf > 0.0f) || !(t > 0.0f)) return {d.direction, 0.0f, 0.0f};
+        return {d.direction, d.pdf, t};
+    }
+};
+template <class S> Wrapped<S> wrap(const S& s, const vec3& o, const Disk& L) {
+    return Wrapped<S>{s, L.center - o, L.normal};
+}
+
+/// Per-kind factories: `(o, disk) -> sampler with sample(u) -> LightSample`.
+struct AreaFactory {
+    auto operator()(const vec3& o, const Disk& L) const {
+        return wrap(apse::DiskAreaSampler<float>(o, L.center, L.normal, L.radius), o, L);
+    }
+};
+struct GamitoFactory {  // Gamito's single shot (the paper's baseline), unbiased bookkeeping
+    auto operator()(const vec3& o, const Disk& L) const {
+        return wrap(apse::GamitoSingleShot<float>(o, L.center, L.normal, L.radius), o, L);
+    }
+};
+template <class Map> struct MapFactory {
+    auto operator()(const vec3& o, const Disk& L) const {
+        return wrap(Map(apse::project_disk(o, L.center, L.normal, L.radius)), o, L);
+    }
+};
+
+#if APSE_DEMO_HAS_TABULATED
+/// The shared table (built once, read-only while rendering).
+struct TabulatedTable {
+    TabulatedTable() : table(std::make_unique<apse::TabulationTable>()) { table->build(); }
+    std::unique_ptr<apse::TabulationTable> table;
+};
+struct TabulatedFactory {  // the paper's default: tabulated LD-radial (code `concentrictab`)
+    apse::TabulationView view;
+    auto operator()(const vec3& o, const Disk& L) const {
+        return wrap(apse::TabulatedLdRadialMap<float>(apse::project_disk(o, L.center, L.normal, L.radius), view),
+                    o, L);
+    }
+};
+inline const apse::TabulationView& tabulation_view() {
+    static const TabulatedTable t;
+    static const apse::TabulationView v = t.table->view();
+    return v;
+}
+#endif
+
+/// Calls f(factory) with the factory of kind k (one template instantiation per kind).
+template <class F> void with_factory(Kind k, F&& f) {
+    switch (k) {
+    case Kind::area: f(AreaFactory{}); break;
+    case Kind::gamito: f(GamitoFactory{}); break;
+    case Kind::radial: f(MapFactory<apse::RadialMap<float>>{}); break;
+    case Kind::ld_radial: f(MapFactory<apse::LdRadialMap<float>>{}); break;
+    case Kind::parallel: f(MapFactory<apse::ParallelMap<float>>{}); break;
+    case Kind::tabulated:
+#if APSE_DEMO_HAS_TABULATED
+        f(TabulatedFactory{tabulation_view()});
+#endif
+        break;
+    }
+}
+
+}  // namespace demo
