@@ -4,12 +4,12 @@
 #   release : g++, Release, all tests + consumer tests (find_package / add_subdirectory /
 #             FetchContent) + the nvcc device-compile test + benchmark smoke runs
 #   sanitize: g++, Debug, AddressSanitizer + UndefinedBehaviorSanitizer
-#   clang   : clang++, Release
+#   clang   : clang++, Release, plus the libFuzzer targets run for a few seconds each
 # Prints "N passed, N failed" over all builds at the end; exits non-zero on any failure.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 . tools/deps.sh
-apse_install_deps "${APSE_BASE_PACKAGES[@]}" clang libboost-math-dev python3
+apse_install_deps "${APSE_BASE_PACKAGES[@]}" clang libclang-rt-14-dev libboost-math-dev python3
 
 jobs=${APSE_JOBS:-2}
 passed=0
@@ -41,7 +41,7 @@ run_build release -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_COMPILER=g++
 run_build sanitize -DCMAKE_BUILD_TYPE=Debug -DCMAKE_CXX_COMPILER=g++ \
   "-DCMAKE_CXX_FLAGS=-fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer" \
   -DAPSE_TEST_CONSUMERS=OFF -DAPSE_TEST_CUDA=OFF -DAPSE_BUILD_BENCHMARKS=OFF
-run_build clang -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_COMPILER=clang++ \
+run_build clang -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_COMPILER=clang++ -DAPSE_BUILD_FUZZERS=ON \
   -DAPSE_TEST_CONSUMERS=OFF -DAPSE_TEST_CUDA=OFF
 echo "== all builds done in $(( $(date +%s) - start )) s"
 echo "$passed passed, $failed failed"
