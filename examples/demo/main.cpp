@@ -92,7 +92,6 @@ int main(int argc, char** argv) {
 
     const std::vector<Scene> scenes = make_scenes();
     const std::vector<Kind> kinds = all_kinds();
-    if (!APSE_DEMO_HAS_TABULATED) std::fprintf(stderr, "apse_demo: maps/tabulated.hpp not available: skipped\n");
 
     // Scene 1's closed-form reference, checked against quadrature first.
     const double check = plane_reference_selfcheck(scenes[0]);
@@ -140,12 +139,12 @@ int main(int argc, char** argv) {
             progress.begin(scene.name + ": reference");
             std::vector<Image> r;
             // the most efficient unbiased sampler, with points independent of the judged renders
-            const Kind ref_kind = APSE_DEMO_HAS_TABULATED ? Kind::tabulated : Kind::ld_radial;
+            const Kind ref_kind = Kind::tabulated;
             render(scene, ref_kind, opt.width, opt.height, {opt.ref_spp}, opt.threads, 0x9e3779b9u, progress, r);
             progress.end();
             ref = r.front();
             ref_note = std::to_string(opt.ref_spp) + " spp with " +
-                       kind_name(APSE_DEMO_HAS_TABULATED ? Kind::tabulated : Kind::ld_radial) + " (independent points)";
+                       kind_name(ref_kind) + " (independent points)";
         }
         const float exposure = auto_exposure(ref);
         std::vector<Panel> panels;

@@ -13,14 +13,6 @@
 
 #include <apse/apse.hpp>
 
-// ---- The tabulated map: the ONE place that adds it (maps/tabulated.hpp, issue in progress). ----
-#if __has_include(<apse/maps/tabulated.hpp>) && !defined(APSE_DEMO_NO_TABULATED)
-#include <apse/maps/tabulated.hpp>
-#define APSE_DEMO_HAS_TABULATED 1
-#else
-#define APSE_DEMO_HAS_TABULATED 0
-#endif
-
 namespace demo {
 
 using vec2 = glm::vec2;
@@ -53,11 +45,9 @@ inline const char* kind_name(Kind k) {
     return "?";
 }
 
-/// The samplers of the comparison, in display order (tabulated only when available).
+/// The samplers of the comparison, in display order.
 inline std::vector<Kind> all_kinds() {
-    std::vector<Kind> k{Kind::area, Kind::gamito, Kind::radial, Kind::ld_radial, Kind::parallel};
-    if (APSE_DEMO_HAS_TABULATED) k.push_back(Kind::tabulated);
-    return k;
+    return {Kind::area, Kind::gamito, Kind::radial, Kind::ld_radial, Kind::parallel, Kind::tabulated};
 }
 
 /// Wraps a sampler with `sample(u) -> DirectionSample<float>` into LightSample (the distance is
@@ -94,7 +84,6 @@ template <class Map> struct MapFactory {
     }
 };
 
-#if APSE_DEMO_HAS_TABULATED
 /// The shared table (built once, read-only while rendering).
 struct TabulatedTable {
     TabulatedTable() : table(std::make_unique<apse::TabulationTable>()) { table->build(); }
@@ -112,7 +101,6 @@ inline const apse::TabulationView& tabulation_view() {
     static const apse::TabulationView v = t.table->view();
     return v;
 }
-#endif
 
 /// Calls f(factory) with the factory of kind k (one template instantiation per kind).
 template <class F> void with_factory(Kind k, F&& f) {
@@ -122,11 +110,7 @@ template <class F> void with_factory(Kind k, F&& f) {
     case Kind::radial: f(MapFactory<apse::RadialMap<float>>{}); break;
     case Kind::ld_radial: f(MapFactory<apse::LdRadialMap<float>>{}); break;
     case Kind::parallel: f(MapFactory<apse::ParallelMap<float>>{}); break;
-    case Kind::tabulated:
-#if APSE_DEMO_HAS_TABULATED
-        f(TabulatedFactory{tabulation_view()});
-#endif
-        break;
+    case Kind::tabulated: f(TabulatedFactory{tabulation_view()}); break;
     }
 }
 
