@@ -13,12 +13,12 @@
 // the measured error is the library's own error (the reference's is ~1e-30).
 #include <apse/elliptic.hpp>
 
+#include "support/reference_table.hpp"
+
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
-#include <fstream>
 #include <functional>
-#include <sstream>
 #include <string>
 #include <type_traits>
 #include <vector>
@@ -29,39 +29,16 @@
 
 namespace {
 
-struct Row {
-    std::vector<double> in;  // exact in float
-    long double ref;         // 30 digits, parsed to long double (64-bit significand on x86)
-    std::string category;
-};
+using Row = apse_test::ReferenceRow;
 
-// Reads "<in...>,value,category" rows after '#' comments and one header line.
+// The rows of the table at `path` (support/reference_table.hpp); a malformed row is fatal.
 std::vector<Row> read_table(const std::string& path, std::size_t n_in) {
-    std::vector<Row> rows;
-    std::ifstream file(path);
-    std::string line;
-    bool header = false;
-    while (std::getline(file, line)) {
-        if (line.empty() || line[0] == '#') continue;
-        if (!header) {
-            header = true;
-            continue;
-        }
-        std::vector<std::string> fields;
-        std::stringstream ss(line);
-        std::string field;
-        while (std::getline(ss, field, ',')) fields.push_back(field);
-        if (fields.size() != n_in + 2) {
+    return apse_test::read_reference_table(path, n_in, [&](std::size_t field_count, const std::string& line) {
+        if (field_count != n_in + 2) {
             std::fprintf(stderr, "%s: bad row: %s\n", path.c_str(), line.c_str());
             std::exit(2);
         }
-        Row r;
-        for (std::size_t i = 0; i < n_in; ++i) r.in.push_back(std::strtod(fields[i].c_str(), nullptr));
-        r.ref = std::strtold(fields[n_in].c_str(), nullptr);
-        r.category = fields[n_in + 1];
-        rows.push_back(r);
-    }
-    return rows;
+    });
 }
 
 // Relative error of v in units of eps; a NaN or a wrong zero counts as infinite.

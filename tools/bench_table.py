@@ -1,11 +1,23 @@
 #!/usr/bin/env python3
-"""Turn bench_elliptic's JSON output into a markdown table: median ns per call of every apse
-elliptic function in float and double, of each peer computing the same function on the same
-inputs, and the ratio peer / apse (> 1: apse is faster).
+"""Turn a benchmark's JSON output into a markdown table. Two inputs are recognised by their
+benchmark names:
+
+* bench_elliptic: median ns per call of every apse elliptic function in float and double, of each
+  peer computing the same function on the same inputs, and the ratio peer / apse (> 1: apse is
+  faster).
 
     bench_elliptic --benchmark_repetitions=5 --benchmark_report_aggregates_only=true \\
                    --benchmark_format=json > elliptic.json
     python3 tools/bench_table.py elliptic.json          (or: ... | python3 tools/bench_table.py)
+
+* bench_samplers (names <sampler>/<float|double>/<samples>): README's "Speed" table — one row per
+  sampler, the ratio of its median time to area sampling's (DiskAreaSampler, same run) for
+  set-up + 1 and set-up + 16 samples in double and float, the median ns in parentheses, and the
+  mean iterations (or table-walk steps) and acceptance per sample.
+
+    bench_samplers --benchmark_repetitions=5 --benchmark_report_aggregates_only=true \\
+                   --benchmark_min_time=0.4 --benchmark_format=json > samplers.json
+    python3 tools/bench_table.py samplers.json
 
 Uses the "median" aggregates when repetitions were run, the plain runs otherwise. The header
 states the CPU and compiler recorded in the JSON context. Only the standard library is needed.
@@ -34,9 +46,96 @@ FUNCTIONS = [
 ]
 NAME = re.compile(r'^(apsedbl|apse|std|boostnp|boost)_(\w+?)<(float|double)>$')
 
+# bench_samplers: benchmark sampler name -> row title, in table order (area is the reference)
+SAMPLERS = [
+    ('area', '`DiskAreaSampler` (reference)'),
+    ('gamito_single_shot', '`GamitoSingleShot`'),
+    ('gamito_retry8', '`GamitoRetry` (N = 8)'),
+    ('rectangle', '`SphericalRectangle` (bounding square)'),
+    ('radial', '`RadialMap`'),
+    ('ld_radial', '`LdRadialMap`'),
+    ('parallel', '`ParallelMap`'),
+    ('tabulated', '`TabulatedMap`'),
+    ('tabulated_ld_radial', '`TabulatedLdRadialMap`'),
+]
+SAMPLER_NAME = re.compile(r'^(\w+)/(float|double)/(\d+)$')
 
-def load(stream):
-    data = json.load(stream)
+
+def selected_runs(data):
+    """The median aggregates if repetitions were run, else the plain runs; and which it was."""
+    runs = data.get('benchmarks', [])
+    have_median = any(b.get('aggregate_name') == 'median' for b in runs)
+    out = []
+    for b in runs:
+        if have_median and b.get('aggregate_name') != 'median':
+            continue
+        if not have_median and b.get('run_type') == 'aggregate':
+            continue
+        out.append(b)
+    return out, have_median
+
+
+def ns(b):
+    return b['cpu_time'] * {'ns': 1.0, 'us': 1e3, 'ms': 1e6, 's': 1e9}[b.get('time_unit', 'ns')]
+
+
+def header(ctx, have_median, repetitions, extra=''):
+    return '%s (%s CPUs, %s MHz), %s; assertions %s%s; %s.' % (
+        ctx.get('cpu_model', 'unknown CPU'), ctx.get('num_cpus', '?'), ctx.get('mhz_per_cpu', '?'),
+        ctx.get('compiler', 'unknown compiler'), ctx.get('apse_assertions', '?'), extra,
+        ('median CPU time of %s repetitions' % repetitions) if have_median else 'CPU time of one run')
+
+
+def samplers_table(data):
+    runs, have_median = selected_runs(data)
+    res = {}
+    reps = '?'
+    for b in runs:
+        m = SAMPLER_NAME.match(b.get('run_name', b['name']))
+        if m:
+            res[(m.group(1), m.group(2), int(m.group(3)))] = b
+            reps = b.get('repetitions', reps)
+    print(header(data.get('context', {}), have_median, reps))
+    print()
+    cols = [('double', 1), ('double', 16), ('float', 1), ('float', 16)]
+    print('| sampler | ' + ' | '.join('%s, set-up + %d' % c for c in cols) +
+          ' | iterations / sample (double, float) | accepted (double, float) |')
+    print('|---|' + '---:|' * (len(cols) + 2))
+    known = [k for k, _ in SAMPLERS]
+    rows = SAMPLERS + [(k, '`%s`' % k) for k in sorted({key[0] for key in res}) if k not in known]
+    for key, title in rows:
+        if not any(k[0] == key for k in res):
+            continue
+        cells = [title]
+        for ty, n in cols:
+            b, ref = res.get((key, ty, n)), res.get(('area', ty, n))
+            if b is None:
+                cells.append('—')
+            elif ref is None:
+                cells.append('%.0f ns' % ns(b))
+            else:
+                cells.append('%.1f× (%.0f ns)' % (ns(b) / ns(ref), ns(b)) if key != 'area'
+                             else '1 (%.0f ns)' % ns(b))
+
+        def counter(name, fmt):
+            vals = []
+            for ty in ('double', 'float'):
+                b = res.get((key, ty, 16)) or res.get((key, ty, 1))
+                vals.append(fmt % b[name] if b is not None and name in b else None)
+            return '—' if all(v is None for v in vals) else ', '.join(v or '—' for v in vals)
+        cells.append(counter('iterations', '%.3g'))
+        cells.append(counter('accepted', '%.3g'))
+        print('| ' + ' | '.join(cells) + ' |')
+    print()
+    print('Per fresh shading point: set-up (projection + map, or the baseline\'s own) + 1 or 16 '
+          'samples, 1024 seeded unit disks 0.1–1000 radii away (log-uniform), all orientations, '
+          'the same points of the square for every sampler. Ratio = median time / median time of '
+          'DiskAreaSampler in the same run (> 1: slower than area sampling); iterations = inversion '
+          'iterations (exact maps) or table-walk steps (tabulated) per sample, from the '
+          'set-up + 16 runs; accepted = fraction of samples with pdf > 0.')
+
+
+def load(data):
     runs = data.get('benchmarks', [])
     have_median = any(b.get('aggregate_name') == 'median' for b in runs)
     times = {}
@@ -55,7 +154,11 @@ def load(stream):
 
 def main():
     stream = open(sys.argv[1]) if len(sys.argv) > 1 else sys.stdin
-    ctx, times, have_median = load(stream)
+    data = json.load(stream)
+    if any(SAMPLER_NAME.match(b.get('run_name', b['name'])) for b in data.get('benchmarks', [])):
+        samplers_table(data)
+        return
+    ctx, times, have_median = load(data)
     cpu = ctx.get('cpu_model', 'unknown CPU')
     print('%s (%s CPUs, %s MHz), %s; %s; Boost %s; %s of %s.' % (
         cpu, ctx.get('num_cpus', '?'), ctx.get('mhz_per_cpu', '?'),

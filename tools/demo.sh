@@ -6,7 +6,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 . tools/deps.sh
-apse_install_deps "${APSE_BASE_PACKAGES[@]}" libstb-dev
+apse_install_deps "${APSE_BASE_PACKAGES[@]}"
 cmake -S . -B build/demo -G Ninja -DCMAKE_BUILD_TYPE=Release -DAPSE_BUILD_TESTS=OFF \
   -DAPSE_BUILD_BENCHMARKS=OFF -DAPSE_BUILD_EXAMPLES=ON > /dev/null
 cmake --build build/demo -j "${APSE_JOBS:-2}" --target apse_minimal apse_demo

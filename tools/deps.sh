@@ -14,4 +14,4 @@ apse_install_deps() {
     DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}"
   fi
 }
-APSE_BASE_PACKAGES=(g++ cmake ninja-build libglm-dev catch2 libbenchmark-dev)
+APSE_BASE_PACKAGES=(g++ cmake ninja-build libglm-dev catch2 libbenchmark-dev libstb-dev)

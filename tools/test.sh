@@ -9,7 +9,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 . tools/deps.sh
-apse_install_deps "${APSE_BASE_PACKAGES[@]}" clang libclang-rt-14-dev libboost-math-dev python3
+apse_install_deps "${APSE_BASE_PACKAGES[@]}" clang libclang-rt-14-dev libboost-math-dev
 
 jobs=${APSE_JOBS:-2}
 passed=0
