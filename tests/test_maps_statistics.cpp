@@ -1,6 +1,6 @@
 // Statistical tests of the three maps, float and double: chi-square uniformity against cell
-// probabilities integrated independently on the disk, and stratification (variance of a jittered
-// 16 x 16 estimate against an independent one).
+// probabilities integrated independently on the disk, and unbiasedness (stratification of every
+// sampler: test_stratification.cpp).
 #include <apse/maps/ld_radial.hpp>
 #include <apse/maps/parallel.hpp>
 #include <apse/maps/radial.hpp>
@@ -54,31 +54,6 @@ TEMPLATE_TEST_CASE("chi-square: samples are uniform in solid angle", "[maps][chi
                         name.c_str(), cfg[0], cfg[1], r.chi2, r.dof, r.p);
             INFO(name << " d " << cfg[0] << " h " << cfg[1] << " chi2 " << r.chi2 << " dof " << r.dof << " p " << r.p);
             CHECK(r.p > level);
-        });
-    }
-}
-
-TEMPLATE_TEST_CASE("stratification survives the maps", "[maps][stratification]", float, double) {
-    using T = TestType;
-    // Monte Carlo estimate of int f(w) dw over the ellipse, f smooth (a cosine lobe tilted off
-    // the centre), with N = 16 x 16 points per estimate: jittered points vs independent ones.
-    // For a smooth integrand an area-preserving *continuous* map keeps the jittered estimator's
-    // variance at O(N^-2) against O(N^-1) (ratio ~N/const; measured 64-290 here, the radial map
-    // lowest: its centre seam); require a conservative ratio of 20 (a rejection sampler, e.g.
-    // Gamito, stays within a small factor of 1).
-    const int reps = 300;
-    for (const auto& cfg : kDisks) {
-        const auto e = apse::project_disk(Vec3<T>(0), Vec3<T>(T(cfg[1]), T(0), T(cfg[0])), Vec3<T>(0, 0, 1), T(1));
-        const glm::dvec3 lobe = glm::normalize(glm::dvec3(e.z) + 0.7 * glm::dvec3(e.x) + 0.4 * glm::dvec3(e.y));
-        auto f = [&](const Vec3<T>& w) { const double c = glm::dot(glm::dvec3(w), lobe); return 1.0 + 3.0 * c * c * c; };
-        for_each_map(e, [&](const std::string& name, const auto& map) {
-            auto smp = [&](T u1, T u2) { return map.sample(Vec2<T>(u1, u2)); };
-            const double vj = apse_test::estimator_variance<T>(smp, f, 16, reps, true, 77);
-            const double vi = apse_test::estimator_variance<T>(smp, f, 16, reps, false, 78);
-            std::printf("[%s] stratification %s d=%g h=%g: variance independent/jittered = %.1f\n",
-                        sizeof(T) == 4 ? "float" : "double", name.c_str(), cfg[0], cfg[1], vi / vj);
-            INFO(name << " d " << cfg[0] << " h " << cfg[1] << " var jittered " << vj << " independent " << vi);
-            CHECK(vi / vj > 20.0);
         });
     }
 }
