@@ -5,11 +5,11 @@
 
 #include <catch2/catch.hpp>
 
+#include "support/reference_table.hpp"
+
 #include <cmath>
 #include <cstdlib>
-#include <fstream>
 #include <limits>
-#include <sstream>
 #include <string>
 #include <type_traits>
 #include <vector>
@@ -31,39 +31,16 @@ double rel_error(double v, double ref) {
 
 // ---- reference tables (tools/gen_elliptic_reference.py) ---------------------------------------
 
-struct Row {
-    std::vector<double> in;
-    long double ref;
-    std::string line;
-};
+using Row = apse_test::ReferenceRow;
 
-// '#' comments, one header line, then rows "<inputs...>,value,category". Inputs are hexadecimal
-// floating literals exact in float (std::strtod parses them exactly); the value has 30 digits.
+// The table tests/data/elliptic/<name>.csv (support/reference_table.hpp): every row must have
+// n_in inputs, the value and the category.
 std::vector<Row> read_table(const std::string& name, std::size_t n_in) {
     const std::string path = std::string(APSE_TEST_DATA_DIR) + "/elliptic/" + name + ".csv";
-    std::ifstream file(path);
     INFO("reference table " << path);
-    std::vector<Row> rows;
-    std::string line;
-    bool header = false;
-    while (std::getline(file, line)) {
-        if (line.empty() || line[0] == '#') continue;
-        if (!header) {
-            header = true;
-            continue;
-        }
-        std::vector<std::string> fields;
-        std::stringstream ss(line);
-        std::string field;
-        while (std::getline(ss, field, ',')) fields.push_back(field);
-        REQUIRE(fields.size() == n_in + 2);
-        Row r;
-        for (std::size_t i = 0; i < n_in; ++i) r.in.push_back(std::strtod(fields[i].c_str(), nullptr));
-        r.ref = std::strtold(fields[n_in].c_str(), nullptr);
-        r.line = line;
-        rows.push_back(r);
-    }
-    return rows;
+    return apse_test::read_reference_table(path, n_in, [&](std::size_t field_count, const std::string&) {
+        REQUIRE(field_count == n_in + 2);
+    });
 }
 
 // The largest relative error of f over a table must stay within budget * eps(T). The inputs

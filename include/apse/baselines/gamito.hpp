@@ -57,6 +57,15 @@ template <class T> APSE_FUNC bool in_inscribed_disk(const glm::vec<2, T>& st) no
     return a * a + b * b <= T(1);
 }
 
+/// GamitoSingleShot's density at the world-space `direction`, in solid angle: the square's
+/// 1/Omega_square where the direction meets the square inside its inscribed disk, else 0 (also
+/// for NaN directions or an empty square). GamitoRetry's density is positive exactly where this is.
+template <class T>
+APSE_FUNC T on_disk_square_pdf(const SphericalRectangle<T>& square, const glm::vec<3, T>& direction) noexcept {
+    const RectanglePoint<T> p = square.locate(direction);
+    return in_inscribed_disk(p.st) ? p.pdf : T(0);
+}
+
 /// splitmix64's output function (a bijective 64-bit mixer with full avalanche).
 APSE_FUNC std::uint64_t mix64(std::uint64_t z) noexcept {
     z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
@@ -147,10 +156,7 @@ public:
 
     /// The density `sample` draws from, in solid angle: 1/Omega_square on the disk, 0 off it
     /// (and for NaN directions or an empty sampler).
-    APSE_FUNC T pdf(const vec3& direction) const noexcept {
-        const RectanglePoint<T> p = square_.locate(direction);
-        return detail::in_inscribed_disk(p.st) ? p.pdf : T(0);
-    }
+    APSE_FUNC T pdf(const vec3& direction) const noexcept { return detail::on_disk_square_pdf(square_, direction); }
 
 private:
     SphericalRectangle<T> square_;
@@ -235,8 +241,7 @@ public:
     /// The density `sample` draws from, in solid angle: (1 − (1 − A)^N)/Omega_disk on the disk,
     /// 0 off it (and for NaN directions or an empty sampler).
     APSE_FUNC T pdf(const vec3& direction) const noexcept {
-        const RectanglePoint<T> p = square_.locate(direction);
-        return (p.pdf > T(0) && detail::in_inscribed_disk(p.st)) ? pdf_ : T(0);
+        return detail::on_disk_square_pdf(square_, direction) > T(0) ? pdf_ : T(0);
     }
 
 private:

@@ -9,12 +9,16 @@
 ///
 /// * `clamp_unit` — the input policy for points of the square (NaN is reported, finite values
 ///   are clamped into [0, 1]);
+/// * `normalize_direction` — the input policy for directions given to invert() (any non-zero
+///   finite length; zero, NaN or infinite is reported);
 /// * `fold_quadrant` / `unfold_quadrant_fraction` — u1 in [0, 1] ↔ (quadrant q, fraction f of
 ///   that quadrant's area measured from the major axis), reflected in odd quadrants so the map
 ///   is continuous across quadrant boundaries;
 /// * `quadrant_of` / `place_in_quadrant` — a local direction ↔ (quadrant, |x|, |y|);
 /// * `fold_half` / `unfold_half_fraction` — u1 in [0, 1] ↔ (side ±1 of the major axis, fraction
 ///   of that half's area measured from the minor-axis end), the parallel map's symmetry.
+
+#include <cmath>
 
 #include "../config.hpp"
 #include "../math.hpp"
@@ -27,6 +31,24 @@ namespace detail {
 template <class T> APSE_FUNC T clamp_unit(T x, bool& ok) noexcept {
     if (is_nan(x)) ok = false;
     return clamp(x, T(0), T(1));
+}
+
+/// The point u of the square with both coordinates through clamp_unit (x first, then y).
+template <class T> APSE_FUNC glm::vec<2, T> clamp_unit(const glm::vec<2, T>& u, bool& ok) noexcept {
+    const T x = clamp_unit(u.x, ok);
+    const T y = clamp_unit(u.y, ok);
+    return glm::vec<2, T>(x, y);
+}
+
+/// v divided by its length; `ok` is cleared (and v returned unchanged) when the length is zero,
+/// NaN or infinite (the caller then reports "no point").
+template <class T> APSE_FUNC glm::vec<3, T> normalize_direction(const glm::vec<3, T>& v, bool& ok) noexcept {
+    const T len = std::sqrt(v.x * v.x + v.y * v.y + v.z * v.z);
+    if (!(len > T(0)) || !is_finite(len)) {
+        ok = false;
+        return v;
+    }
+    return v / len;
 }
 
 /// A point of [0, 1] folded onto one quadrant.

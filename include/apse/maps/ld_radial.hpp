@@ -13,9 +13,8 @@
 #include "../math.hpp"
 #include "../sample.hpp"
 #include "../spherical_ellipse.hpp"
-#include "../detail/concentric.hpp"
 #include "../detail/glm.hpp"
-#include "../detail/quadrant.hpp"
+#include "../detail/ld_composition.hpp"
 #include "radial.hpp"
 
 namespace apse {
@@ -41,14 +40,7 @@ public:
     /// pdf = 1/Omega (solid angle). u is clamped into [0, 1]^2; a NaN coordinate or an empty
     /// ellipse gives pdf 0 (and the centre direction). `iterations`: as RadialMap::sample.
     APSE_FUNC DirectionSample<T> sample(const vec2& u, int& iterations) const noexcept {
-        iterations = 0;
-        const T omega = radial_.solid_angle();
-        bool ok = omega > T(0);
-        const vec2 uc(detail::clamp_unit(u.x, ok), detail::clamp_unit(u.y, ok));
-        if (!ok) return {ellipse().z, T(0)};
-        const detail::ConcentricPolar<T> disk = detail::concentric_to_disk(uc);
-        const vec3 local = radial_.local_direction(disk.turns, disk.radius * disk.radius, iterations);
-        return {ellipse().to_world(local), T(1) / omega};
+        return detail::ld_sample(radial_, radial_.solid_angle() > T(0), u, iterations);
     }
 
     /// sample(u, iterations) without the iteration count.
@@ -62,12 +54,7 @@ public:
     /// centre, where the angle is undefined). Outside: the point whose image is the boundary
     /// point at the same azimuth; zero/NaN/infinite direction or empty ellipse: (0, 0).
     APSE_FUNC vec2 invert(const vec3& d) const noexcept {
-        if (!(radial_.solid_angle() > T(0))) return vec2(T(0));
-        const vec3 l = ellipse().to_local(d);
-        const T len = std::sqrt(l.x * l.x + l.y * l.y + l.z * l.z);
-        if (!(len > T(0)) || !is_finite(len)) return vec2(T(0));
-        const vec2 polar = radial_.local_coordinates(l / len);
-        return detail::concentric_from_disk(std::sqrt(polar.y), polar.x);
+        return detail::ld_invert(radial_, radial_.solid_angle() > T(0), d);
     }
 
     /// Density of sample() at `d`, in solid angle: 1/Omega inside the ellipse, 0 outside.

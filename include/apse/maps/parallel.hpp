@@ -81,8 +81,9 @@ public:
     APSE_FUNC DirectionSample<T> sample(const vec2& u, int& iterations) const noexcept {
         iterations = 0;
         bool ok = valid_;
-        const T u1 = detail::clamp_unit(u.x, ok), u2 = detail::clamp_unit(u.y, ok);
+        const vec2 uc = detail::clamp_unit(u, ok);
         if (!ok) return {ellipse_.z, T(0)};
+        const T u1 = uc.x, u2 = uc.y;
         const detail::HalfFold<T> fold = detail::fold_half(u1);
         const detail::ParallelPoint<T> p = solve_half(fold.fraction, iterations);
         const T x = (T(2) * u2 - T(1)) * p.x_max;
@@ -107,10 +108,9 @@ public:
     /// zero, NaN or infinite direction, or an empty ellipse, gives (0, 0).
     APSE_FUNC vec2 invert(const vec3& d) const noexcept {
         if (!valid_) return vec2(T(0));
-        vec3 l = ellipse_.to_local(d);
-        const T len = std::sqrt(l.x * l.x + l.y * l.y + l.z * l.z);
-        if (!(len > T(0)) || !is_finite(len)) return vec2(T(0));
-        l /= len;
+        bool ok = true;
+        const vec3 l = detail::normalize_direction(ellipse_.to_local(d), ok);
+        if (!ok) return vec2(T(0));
         const T side = l.y < T(0) ? T(-1) : T(1);
         const T psi = std::atan2(std::fabs(l.y), l.z);
         const detail::ParallelPoint<T> p = areas_.parallel_point(clamp(ellipse_.beta - psi, T(0), ellipse_.beta));

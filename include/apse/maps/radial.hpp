@@ -18,6 +18,7 @@
 #include "../detail/glm.hpp"
 #include "../detail/inversion.hpp"
 #include "../detail/quadrant.hpp"
+#include "../detail/radial_polar.hpp"
 
 namespace apse {
 
@@ -65,9 +66,9 @@ public:
     APSE_FUNC DirectionSample<T> sample(const vec2& u, int& iterations) const noexcept {
         iterations = 0;
         bool ok = valid_;
-        const T u1 = detail::clamp_unit(u.x, ok), u2 = detail::clamp_unit(u.y, ok);
+        const vec2 uc = detail::clamp_unit(u, ok);
         if (!ok) return {ellipse_.z, T(0)};
-        return {ellipse_.to_world(local_direction(u1, u2, iterations)), inv_omega_};
+        return {ellipse_.to_world(local_direction(uc.x, uc.y, iterations)), inv_omega_};
     }
 
     /// sample(u, iterations) without the iteration count.
@@ -83,33 +84,25 @@ public:
     /// NaN or infinite direction, or an empty ellipse, gives (0, 0).
     APSE_FUNC vec2 invert(const vec3& d) const noexcept {
         if (!valid_) return vec2(T(0));
-        const vec3 l = ellipse_.to_local(d);
-        const T len = std::sqrt(l.x * l.x + l.y * l.y + l.z * l.z);
-        if (!(len > T(0)) || !is_finite(len)) return vec2(T(0));
-        return local_coordinates(l / len);
+        bool ok = true;
+        const vec3 l = detail::normalize_direction(ellipse_.to_local(d), ok);
+        return ok ? local_coordinates(l) : vec2(T(0));
     }
 
     /// Density of sample() at the world-space direction `d`, in solid angle: 1/Omega inside the
     /// ellipse (boundary included), 0 outside, for an empty ellipse or a zero/NaN direction.
     APSE_FUNC T pdf(const vec3& d) const noexcept { return ellipse_.contains(d) ? inv_omega_ : T(0); }
 
-    /// Building block shared with LdRadialMap: the local-frame direction (x along the major axis,
-    /// z the centre) for (u1, u2) in [0, 1]^2 (not checked).
+    /// Building block: the local-frame direction (x along the major axis, z the centre) for
+    /// (u1, u2) in [0, 1]^2 (not checked).
     APSE_FUNC vec3 local_direction(T u1, T u2, int& iterations) const noexcept {
         const detail::QuadrantFold<T> fold = detail::fold_quadrant(u1);
         const detail::RadialPoint<T> p = solve_quadrant(fold.fraction, iterations);
-        // sin theta_max = r = |(a cos tau, b sin tau)|; 1 − cos theta = u2 (1 − C), 1 − C = r^2/(1 + C);
-        // cos theta = (1 − u2) + u2 C (no cancellation near the horizon of large ellipses).
-        const T ax = areas_.a * p.ct, by = areas_.b * p.st;
-        const T r2 = ax * ax + by * by, r = std::sqrt(r2);
-        const T v = u2 * (r2 / (T(1) + p.c_max));
-        const T sin_theta = std::sqrt(v * (T(2) - v));
-        const T scale = r > T(0) ? sin_theta / r : T(0);
-        return detail::place_in_quadrant(fold.quadrant, ax * scale, by * scale, (T(1) - u2) + u2 * p.c_max);
+        return detail::radial_direction(areas_, fold.quadrant, p.ct, p.st, p.c_max, u2);
     }
 
-    /// Building block shared with LdRadialMap: (u1, u2) of the unit local direction `l`
-    /// (clamped to [0, 1]^2).
+    /// Building block shared with LdRadialMap (detail/ld_composition.hpp): (u1, u2) of the unit
+    /// local direction `l` (clamped to [0, 1]^2).
     APSE_FUNC vec2 local_coordinates(const vec3& l) const noexcept {
         const int q = detail::quadrant_of(l.x, l.y);
         const T x = std::fabs(l.x), y = std::fabs(l.y);
@@ -122,10 +115,8 @@ public:
         const T u1 = detail::unfold_quadrant_fraction(q, f);
         T u2 = T(1);
         if (l.z > T(0)) {
-            const T ax = areas_.a * ct, by = areas_.b * st;
-            const T one_minus_z = (x * x + y * y) / (T(1) + l.z);
-            const T one_minus_c = (ax * ax + by * by) / (T(1) + c);
-            u2 = clamp(one_minus_z / one_minus_c, T(0), T(1));
+            const detail::RadialFraction<T> r = detail::radial_fraction(areas_, x, y, l.z, ct, st, c);
+            u2 = clamp(r.one_minus_cos / r.one_minus_c, T(0), T(1));
         }
         return vec2(clamp(u1, T(0), T(1)), u2);
     }

@@ -44,10 +44,11 @@
 #include "../math.hpp"
 #include "../sample.hpp"
 #include "../spherical_ellipse.hpp"
-#include "../detail/concentric.hpp"
 #include "../detail/cumulative_area.hpp"
 #include "../detail/glm.hpp"
+#include "../detail/ld_composition.hpp"
 #include "../detail/quadrant.hpp"
+#include "../detail/radial_polar.hpp"
 
 namespace apse {
 
@@ -204,10 +205,10 @@ public:
     APSE_FUNC DirectionSample<T> sample(const vec2& u, int& iterations) const noexcept {
         iterations = 0;
         bool ok = valid_;
-        const T u1 = detail::clamp_unit(u.x, ok), u2 = detail::clamp_unit(u.y, ok);
+        const vec2 uc = detail::clamp_unit(u, ok);
         if (!ok) return {ellipse_.z, T(0)};
         T pdf = T(0);
-        const vec3 l = local_direction(u1, u2, pdf, iterations);
+        const vec3 l = local_direction(uc.x, uc.y, pdf, iterations);
         return {ellipse_.to_world(l), pdf};
     }
 
@@ -224,10 +225,9 @@ public:
     /// a zero/NaN/infinite direction or an empty map gives (0, 0).
     APSE_FUNC vec2 invert(const vec3& d) const noexcept {
         if (!valid_) return vec2(T(0));
-        const vec3 l = ellipse_.to_local(d);
-        const T len = std::sqrt(l.x * l.x + l.y * l.y + l.z * l.z);
-        if (!(len > T(0)) || !is_finite(len)) return vec2(T(0));
-        return local_coordinates(l / len);
+        bool ok = true;
+        const vec3 l = detail::normalize_direction(ellipse_.to_local(d), ok);
+        return ok ? local_coordinates(l) : vec2(T(0));
     }
 
     /// Density of sample() at the world-space direction `d`, in solid angle (the same formula
@@ -241,9 +241,8 @@ public:
         return density(hi - lo, az.ct, az.st, areas_.c_max(az.ct, az.st));
     }
 
-    /// Building block shared with TabulatedLdRadialMap: the local-frame direction for (u1, u2)
-    /// in [0, 1]^2 (not checked), its solid-angle density in `pdf` and the table-walk steps in
-    /// `steps`.
+    /// Building block: the local-frame direction for (u1, u2) in [0, 1]^2 (not checked), its
+    /// solid-angle density in `pdf` and the table-walk steps in `steps`.
     APSE_FUNC vec3 local_direction(T u1, T u2, T& pdf, int& steps) const noexcept {
         const detail::QuadrantFold<T> fold = detail::fold_quadrant(u1);
         const T f = fold.fraction;
@@ -276,17 +275,11 @@ public:
         const T ct = px / n, st = py / n;
         const T c = areas_.c_max(ct, st);
         pdf = density(df, ct, st, c);
-        // radial part exactly as RadialMap: 1 − cos theta = u2 (1 − C), 1 − C = r^2/(1 + C)
-        const T ax = areas_.a * ct, by = areas_.b * st;
-        const T r2 = ax * ax + by * by, r = std::sqrt(r2);
-        const T v = u2 * (r2 / (T(1) + c));
-        const T sin_theta = std::sqrt(v * (T(2) - v));
-        const T scale = r > T(0) ? sin_theta / r : T(0);
-        return detail::place_in_quadrant(fold.quadrant, ax * scale, by * scale, (T(1) - u2) + u2 * c);
+        return detail::radial_direction(areas_, fold.quadrant, ct, st, c, u2);  // as RadialMap
     }
 
-    /// Building block shared with TabulatedLdRadialMap: (u1, u2) of the unit local direction
-    /// `l` (clamped to [0, 1]^2).
+    /// Building block shared with TabulatedLdRadialMap (detail/ld_composition.hpp): (u1, u2) of
+    /// the unit local direction `l` (clamped to [0, 1]^2).
     APSE_FUNC vec2 local_coordinates(const vec3& l) const noexcept {
         const int q = detail::quadrant_of(l.x, l.y);
         const T x = std::fabs(l.x), y = std::fabs(l.y);
@@ -298,10 +291,8 @@ public:
         T u2 = T(1);
         if (l.z > T(0)) {
             const T c = areas_.c_max(az.ct, az.st);
-            const T ax = areas_.a * az.ct, by = areas_.b * az.st;
-            const T one_minus_z = (x * x + y * y) / (T(1) + l.z);
-            const T one_minus_c = (ax * ax + by * by) / (T(1) + c);
-            u2 = one_minus_c > T(0) ? clamp(one_minus_z / one_minus_c, T(0), T(1)) : T(0);
+            const detail::RadialFraction<T> r = detail::radial_fraction(areas_, x, y, l.z, az.ct, az.st, c);
+            u2 = r.one_minus_c > T(0) ? clamp(r.one_minus_cos / r.one_minus_c, T(0), T(1)) : T(0);
         }
         return vec2(clamp(u1, T(0), T(1)), u2);
     }
@@ -372,14 +363,7 @@ public:
     /// ellipse or invalid table: pdf 0 and the centre direction.
     /// `iterations`: table-walk steps, as TabulatedMap::sample.
     APSE_FUNC DirectionSample<T> sample(const vec2& u, int& iterations) const noexcept {
-        iterations = 0;
-        bool ok = !radial_.empty();
-        const vec2 uc(detail::clamp_unit(u.x, ok), detail::clamp_unit(u.y, ok));
-        if (!ok) return {ellipse().z, T(0)};
-        const detail::ConcentricPolar<T> disk = detail::concentric_to_disk(uc);
-        T pdf = T(0);
-        const vec3 l = radial_.local_direction(disk.turns, disk.radius * disk.radius, pdf, iterations);
-        return {ellipse().to_world(l), pdf};
+        return detail::ld_sample(radial_, !radial_.empty(), u, iterations);
     }
 
     /// sample(u, iterations) without the step count.
@@ -391,12 +375,7 @@ public:
     /// Inverse of sample() (as TabulatedMap::invert, then the inverse concentric map; the angle
     /// is undefined at the centre). Zero/NaN/infinite direction or empty map: (0, 0).
     APSE_FUNC vec2 invert(const vec3& d) const noexcept {
-        if (radial_.empty()) return vec2(T(0));
-        const vec3 l = ellipse().to_local(d);
-        const T len = std::sqrt(l.x * l.x + l.y * l.y + l.z * l.z);
-        if (!(len > T(0)) || !is_finite(len)) return vec2(T(0));
-        const vec2 polar = radial_.local_coordinates(l / len);
-        return detail::concentric_from_disk(std::sqrt(polar.y), polar.x);
+        return detail::ld_invert(radial_, !radial_.empty(), d);
     }
 
     /// Density of sample() at `d` in solid angle (the concentric map preserves area, so it is

@@ -1,0 +1,58 @@
+// apse — area-preserving parameterizations for spherical ellipses.
+// SPDX-License-Identifier: MIT
+#pragma once
+
+/// @file detail/radial_polar.hpp
+/// The polar step of the radial maps (MATH.md §4), written once for RadialMap and TabulatedMap
+/// (and through them LdRadialMap and TabulatedLdRadialMap): once u1 has fixed the azimuth, i.e.
+/// the boundary point of the ellipse at that azimuth, u2 picks the polar angle uniformly in solid
+/// angle along the wedge from the centre to that boundary point; and the inverse, u2 of a
+/// direction.
+
+#include <cmath>
+
+#include "../config.hpp"
+#include "../math.hpp"
+#include "cumulative_area.hpp"
+#include "glm.hpp"
+#include "quadrant.hpp"
+
+namespace apse {
+namespace detail {
+
+/// The local direction (x along the major axis, z the centre) at the solid-angle fraction u2 in
+/// [0, 1] of the wedge towards the first-quadrant boundary point with orthographic eccentric
+/// anomaly (cos tau, sin tau) = (ct, st) and cos theta_max = c there (k.c_max(ct, st)), reflected
+/// into quadrant q (place_in_quadrant). sin theta_max = r = |(a cos tau, b sin tau)|;
+/// 1 − cos theta = u2 (1 − C), 1 − C = r^2/(1 + C); cos theta = (1 − u2) + u2 C (no cancellation
+/// near the horizon of large ellipses). u2 = 0 gives the centre, u2 = 1 the boundary point.
+template <class T>
+APSE_FUNC glm::vec<3, T> radial_direction(const EllipseAreas<T>& k, int q, T ct, T st, T c, T u2) noexcept {
+    const T ax = k.a * ct, by = k.b * st;
+    const T r2 = ax * ax + by * by, r = std::sqrt(r2);
+    const T v = u2 * (r2 / (T(1) + c));
+    const T sin_theta = std::sqrt(v * (T(2) - v));
+    const T scale = r > T(0) ? sin_theta / r : T(0);
+    return place_in_quadrant(q, ax * scale, by * scale, (T(1) - u2) + u2 * c);
+}
+
+/// The two terms of the inverse of radial_direction's u2: u2 = one_minus_cos / one_minus_c.
+template <class T> struct RadialFraction {
+    T one_minus_cos;  ///< 1 − cos theta of the direction
+    T one_minus_c;    ///< 1 − C of the boundary point at its azimuth
+};
+
+/// The terms of u2 for the unit local direction (x, y, z), z > 0 (x, y of either sign), whose
+/// azimuth has the first-quadrant boundary point (ct, st) with cos theta_max = c there:
+/// 1 − z = (x^2 + y^2)/(1 + z) and 1 − C = r^2/(1 + C) (both without cancellation). The caller
+/// divides and clamps (and chooses what a zero 1 − C gives).
+template <class T>
+APSE_FUNC RadialFraction<T> radial_fraction(const EllipseAreas<T>& k, T x, T y, T z, T ct, T st, T c) noexcept {
+    const T ax = k.a * ct, by = k.b * st;
+    const T one_minus_z = (x * x + y * y) / (T(1) + z);
+    const T one_minus_c = (ax * ax + by * by) / (T(1) + c);
+    return {one_minus_z, one_minus_c};
+}
+
+}  // namespace detail
+}  // namespace apse
