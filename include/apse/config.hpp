@@ -21,6 +21,16 @@
 #define APSE_DEVICE_COMPILE 0
 #endif
 
+/// `APSE_NOINLINE`: keeps a large internal function (a Carlson core, a closed-form cumulative
+/// area) out of line in CUDA device code, so a kernel holds one copy of it however many apse
+/// calls it makes — inlined everywhere, a kernel calling every sampler took ptxas minutes and
+/// gigabytes. Empty on the host, where the compiler decides as usual.
+#if defined(__CUDACC__)
+#define APSE_NOINLINE __noinline__
+#else
+#define APSE_NOINLINE
+#endif
+
 /// `APSE_ASSERT(cond)`: a debug check of an internal invariant. It compiles to nothing under
 /// `NDEBUG`, in device code, and when `APSE_DISABLE_ASSERT` is defined; never throws.
 #if defined(NDEBUG) || defined(APSE_DISABLE_ASSERT) || defined(__CUDA_ARCH__)

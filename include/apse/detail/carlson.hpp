@@ -33,15 +33,6 @@
 #include "../config.hpp"
 #include "../math.hpp"
 
-// In CUDA device code the large kernels below are compiled once and called, not inlined into
-// every call site: inlined, each public elliptic function expands to tens of kilobytes of PTX
-// (several AGM and duplication variants, atan/log1p), which made kernels calling many of them
-// slow to assemble. On the host the compiler decides as usual.
-#if defined(__CUDA_ARCH__)
-#define APSE_CARLSON_NOINLINE __noinline__
-#else
-#define APSE_CARLSON_NOINLINE
-#endif
 
 // SSE2 (every x86-64 host compiler; not in CUDA device code): see sqrt2.
 #if (defined(__SSE2__) || defined(_M_X64)) && !defined(__CUDA_ARCH__)
@@ -159,7 +150,7 @@ template <class T> APSE_FUNC T rc1(T e, T w) noexcept {
 }
 
 /// R_C(x, y) for x >= 0, y > 0 (DLMF 19.2.17-19.2.18, written without cancellation).
-template <class T> APSE_FUNC APSE_CARLSON_NOINLINE T rc_core(T x, T y) noexcept {
+template <class T> APSE_FUNC APSE_NOINLINE T rc_core(T x, T y) noexcept {
     if (x < y) {
         const T d = y - x;
         return std::atan(std::sqrt(d / x)) / std::sqrt(d);  // x = 0: atan(inf) = pi/2
@@ -264,7 +255,7 @@ template <class T> struct RfRj {
 /// (s = p^2 + a g) computed without cancellation: e_k >= 0 for k >= 1 up to small negative
 /// values, so every term is positive, and S >= (1 + e_0) + |e_0| W / 2 for e_0 < 0.
 template <class T, bool WithRj>
-APSE_FUNC APSE_CARLSON_NOINLINE RfRj<T> agm_core(T y, T z, T p) noexcept {
+APSE_FUNC APSE_NOINLINE RfRj<T> agm_core(T y, T z, T p) noexcept {
     constexpr T agm_tolerance = sizeof(T) == sizeof(float) ? T(3.4e-4) : T(1.49e-8);  // sqrt(eps)
     T a = std::sqrt(z), g = std::sqrt(y);
     T pn = std::sqrt(p), pp = p;    // p_n and p_n^2
@@ -314,7 +305,7 @@ template <class T> APSE_FUNC bool agm_suits(T y, T z, T p) noexcept {
 }
 
 /// R_F(x, y, z) by duplication, for valid finite arguments without a zero, finite sum.
-template <class T> APSE_FUNC APSE_CARLSON_NOINLINE T rf_duplication(T x, T y, T z) noexcept {
+template <class T> APSE_FUNC APSE_NOINLINE T rf_duplication(T x, T y, T z) noexcept {
     const T a0 = (x + y + z) * (T(1) / T(3));
     const T dx = a0 - x, dy = a0 - y;  // the deviations scale by exactly 4^-n
     T a = a0;
@@ -348,7 +339,7 @@ template <class T> APSE_FUNC T rf_core(T x, T y, T z) noexcept {
 /// root of p, but its e is unbounded and ~4x larger: for arguments log-uniform in [1e-2, 1e2],
 /// |e_0| > 1/4 in 61% of the calls instead of 25%, |e_1| > 1/4 in 12% instead of 5%.)
 template <class T, bool WithRf>
-APSE_FUNC APSE_CARLSON_NOINLINE RfRj<T> rj_core_unscaled(T x, T y, T z, T p) noexcept {
+APSE_FUNC APSE_NOINLINE RfRj<T> rj_core_unscaled(T x, T y, T z, T p) noexcept {
     const T a0 = (x + y + z + T(2) * p) * T(0.2);
     const T dx = a0 - x, dy = a0 - y, dz = a0 - z;
     T q = max_deviation(a0, x, y, z, p) * (T(1) / rj_tolerance<T>());
@@ -444,7 +435,7 @@ APSE_FUNC RfRj<T> rj_core(T x, T y, T z, T p) noexcept {
 
 /// R_D(x, y, z) for valid finite arguments (z > 0, at most one of x, y zero):
 /// R_D = 4^-n A_n^(-3/2) series + 3 sum_m 4^-m / (sqrt z_m (z_m + lambda_m)).
-template <class T> APSE_FUNC APSE_CARLSON_NOINLINE T rd_core(T x, T y, T z) noexcept {
+template <class T> APSE_FUNC APSE_NOINLINE T rd_core(T x, T y, T z) noexcept {
     // R_D(0, y, z) = R_J(0, y, z, z): complete, by the AGM (via rj_core, which scales).
     if (x == T(0) || y == T(0)) return rj_core(x, y, z, z).rj;
     T scale = T(1);

@@ -42,20 +42,12 @@
 #include "../math.hpp"
 #include "../spherical_ellipse.hpp"
 
-/// Device code: the closed forms (each with an inlined R_J) are kept out of line, so a kernel
-/// holds one copy of each however many samplers it calls (ptxas time and memory grow quickly with
-/// the size of a kernel).
-#if defined(__CUDACC__)
-#define APSE_DETAIL_NOINLINE __noinline__
-#else
-#define APSE_DETAIL_NOINLINE
-#endif
 
 namespace apse {
 namespace detail {
 
-/// e.solid_angle() (one R_J), kept out of line in device code (see APSE_DETAIL_NOINLINE).
-template <class T> APSE_DETAIL_NOINLINE APSE_FUNC T solid_angle_of(const SphericalEllipse<T>& e) noexcept {
+/// e.solid_angle() (one R_J), kept out of line in device code (see APSE_NOINLINE).
+template <class T> APSE_NOINLINE APSE_FUNC T solid_angle_of(const SphericalEllipse<T>& e) noexcept {
     return e.solid_angle();
 }
 
@@ -119,7 +111,7 @@ template <class T> struct EllipseAreas {
     /// Omega_r at the boundary point (ct, st, C) = (cos tau, sin tau, C(tau)), tau in [0, pi/2]:
     /// the area of the part of the ellipse with azimuth in [0, phi(tau)] (file comment).
     /// Relative accuracy a few eps (R_J's and atan2's) for every ellipse.
-    APSE_DETAIL_NOINLINE APSE_FUNC T radial_area(T ct, T st, T c) const noexcept {
+    APSE_NOINLINE APSE_FUNC T radial_area(T ct, T st, T c) const noexcept {
         if (!(st > T(0))) return T(0);
         // R_J(ca² ct², ca², C², ca²(ct² + cb² st²)) = ca^-3 R_J(ct², 1, C²/ca², ct² + cb² st²)
         // (homogeneity; the scaled form neither underflows nor overflows for any ellipse).
@@ -186,7 +178,7 @@ template <class T> struct EllipseAreas {
 
     /// Half-area I(psi) between the slices 0 and psi = beta − e (file comment): the radial sector
     /// to the boundary point plus the geodesic triangle, doubled. Relative accuracy a few eps.
-    APSE_DETAIL_NOINLINE APSE_FUNC T parallel_half_area(const ParallelPoint<T>& p) const noexcept {
+    APSE_NOINLINE APSE_FUNC T parallel_half_area(const ParallelPoint<T>& p) const noexcept {
         const T sector = radial_area(p.ct, p.st, p.c_max);
         // (both atan2 arguments divided by N, so that tiny ellipses do not underflow)
         const T inv_n = T(1) / p.n;
