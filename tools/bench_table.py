@@ -83,7 +83,8 @@ def header(ctx, have_median, repetitions, extra=''):
     return '%s (%s CPUs, %s MHz), %s; assertions %s%s; %s.' % (
         ctx.get('cpu_model', 'unknown CPU'), ctx.get('num_cpus', '?'), ctx.get('mhz_per_cpu', '?'),
         ctx.get('compiler', 'unknown compiler'), ctx.get('apse_assertions', '?'), extra,
-        ('median CPU time of %s repetitions' % repetitions) if have_median else 'CPU time of one run')
+        ('median CPU time of %s repetitions' % repetitions) if have_median
+        else 'CPU time of one run')
 
 
 def samplers_table(data):
@@ -123,15 +124,15 @@ def samplers_table(data):
                 b = res.get((key, ty, 16)) or res.get((key, ty, 1))
                 vals.append(fmt % b[name] if b is not None and name in b else None)
             return '—' if all(v is None for v in vals) else ', '.join(v or '—' for v in vals)
-        cells.append(counter('iterations', '%.3g'))
+        cells.append(counter('mean_iterations', '%.3g'))
         cells.append(counter('accepted', '%.3g'))
         print('| ' + ' | '.join(cells) + ' |')
     print()
     print('Per fresh shading point: set-up (projection + map, or the baseline\'s own) + 1 or 16 '
           'samples, 1024 seeded unit disks 0.1–1000 radii away (log-uniform), all orientations, '
           'the same points of the square for every sampler. Ratio = median time / median time of '
-          'DiskAreaSampler in the same run (> 1: slower than area sampling); iterations = inversion '
-          'iterations (exact maps) or table-walk steps (tabulated) per sample, from the '
+          'DiskAreaSampler in the same run (> 1: slower than area sampling); iterations = '
+          'inversion iterations (exact maps) or table-walk steps (tabulated) per sample, from the '
           'set-up + 16 runs; accepted = fraction of samples with pdf > 0.')
 
 

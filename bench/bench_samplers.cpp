@@ -1,0 +1,207 @@
+// apse's sampler benchmark (issue 5): every disk sampler, per fresh shading point — set-up
+// (projection + map, or the baseline's own set-up) + 1 sample, and set-up + 16 samples — in
+// float and double, over the same 1024 seeded disk configurations and the same points of the
+// square (support/disk_configs.hpp). DiskAreaSampler (uniform by area) is the reference: compare
+// ratios to it measured in the same run, never absolute times. Timing goals live here, never in
+// tests.
+//
+// Names: <sampler>/<float|double>/<samples>. Counters (means per sample):
+//   accepted   — fraction of samples with pdf > 0 (Gamito's acceptance; 1 for the maps);
+//   mean_iterations — inversion iterations (RadialMap, LdRadialMap, ParallelMap) or table-walk
+//                     steps (TabulatedMap, TabulatedLdRadialMap), from sample(u, iterations).
+// The JSON context records the compiler and CPU; tools/bench_table.py makes the README's table:
+//   bench_samplers --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
+//                  --benchmark_min_time=0.4 --benchmark_format=json > samplers.json   (~2 min)
+//   python3 tools/bench_table.py samplers.json
+#include "support/disk_configs.hpp"
+
+#include <apse/baselines/area.hpp>
+#include <apse/baselines/gamito.hpp>
+#include <apse/baselines/rectangle.hpp>
+#include <apse/maps/ld_radial.hpp>
+#include <apse/maps/parallel.hpp>
+#include <apse/maps/radial.hpp>
+#include <apse/maps/tabulated.hpp>
+#include <apse/projection.hpp>
+
+#include <benchmark/benchmark.h>
+
+#include <fstream>
+#include <memory>
+#include <string>
+#include <type_traits>
+#include <utility>
+
+namespace {
+
+using apse_bench::DiskConfig;
+using apse_bench::DiskConfigs;
+
+/// The tabulation table, built once, outside any timing loop (main() builds it first).
+const apse::TabulationTable& table() {
+    static const std::unique_ptr<apse::TabulationTable> t = [] {
+        auto p = std::make_unique<apse::TabulationTable>();
+        p->build();
+        return p;
+    }();
+    return *t;
+}
+
+// Sampler factories: make(disk, table view) builds the sampler for one shading point.
+struct Area {
+    static constexpr const char* name = "area";
+    template <class T> static auto make(const DiskConfig<T>& d, const apse::TabulationView&) {
+        return apse::DiskAreaSampler<T>(d.o, d.c, d.n, d.r);
+    }
+};
+struct Rectangle {  // the disk's circumscribed square, sampled without rejection
+    static constexpr const char* name = "rectangle";
+    template <class T> static auto make(const DiskConfig<T>& d, const apse::TabulationView&) {
+        return apse::SphericalRectangle<T>::from_center(d.o, d.c, d.r * d.half_x, d.r * d.half_y);
+    }
+};
+struct GamitoSingleShot {
+    static constexpr const char* name = "gamito_single_shot";
+    template <class T> static auto make(const DiskConfig<T>& d, const apse::TabulationView&) {
+        return apse::GamitoSingleShot<T>(d.o, d.c, d.n, d.r);
+    }
+};
+struct GamitoRetry8 {
+    static constexpr const char* name = "gamito_retry8";
+    template <class T> static auto make(const DiskConfig<T>& d, const apse::TabulationView&) {
+        return apse::GamitoRetry<T>(d.o, d.c, d.n, d.r, 8);
+    }
+};
+struct Radial {
+    static constexpr const char* name = "radial";
+    template <class T> static auto make(const DiskConfig<T>& d, const apse::TabulationView&) {
+        return apse::RadialMap<T>(apse::project_disk(d.o, d.c, d.n, d.r));
+    }
+};
+struct LdRadial {
+    static constexpr const char* name = "ld_radial";
+    template <class T> static auto make(const DiskConfig<T>& d, const apse::TabulationView&) {
+        return apse::LdRadialMap<T>(apse::project_disk(d.o, d.c, d.n, d.r));
+    }
+};
+struct Parallel {
+    static constexpr const char* name = "parallel";
+    template <class T> static auto make(const DiskConfig<T>& d, const apse::TabulationView&) {
+        return apse::ParallelMap<T>(apse::project_disk(d.o, d.c, d.n, d.r));
+    }
+};
+struct Tabulated {
+    static constexpr const char* name = "tabulated";
+    template <class T> static auto make(const DiskConfig<T>& d, const apse::TabulationView& v) {
+        return apse::TabulatedMap<T>(apse::project_disk(d.o, d.c, d.n, d.r), v);
+    }
+};
+struct TabulatedLdRadial {
+    static constexpr const char* name = "tabulated_ld_radial";
+    template <class T> static auto make(const DiskConfig<T>& d, const apse::TabulationView& v) {
+        return apse::TabulatedLdRadialMap<T>(apse::project_disk(d.o, d.c, d.n, d.r), v);
+    }
+};
+
+/// True if S has the iteration-counting overload sample(u, int& iterations).
+template <class S, class U>
+using sample_with_iterations =
+    decltype(std::declval<const S&>().sample(std::declval<const U&>(), std::declval<int&>()));
+template <class S, class U, class = void> struct counts_iterations : std::false_type {};
+template <class S, class U>
+struct counts_iterations<S, U, std::void_t<sample_with_iterations<S, U>>> : std::true_type {};
+
+/// One fresh shading point per benchmark iteration: build the sampler, draw `Samples` samples.
+template <class Factory, class T, int Samples> void bm_sampler(benchmark::State& state) {
+    const DiskConfigs<T>& s = apse_bench::disk_configs<T>();
+    const apse::TabulationView view = table().view();
+    using Sampler = decltype(Factory::make(s.disks[0], view));
+    constexpr bool has_iterations = counts_iterations<Sampler, glm::vec<2, T>>::value;
+    std::size_t i = 0, k = 0;
+    long iterations = 0, accepted = 0;
+    for (auto _ : state) {
+        const auto& disk = s.disks[i++ & (DiskConfigs<T>::disk_count - 1)];
+        const Sampler sampler = Factory::make(disk, view);
+        T acc = T(0);
+        for (int j = 0; j < Samples; ++j) {
+            const glm::vec<2, T>& u = s.u[k++ & (DiskConfigs<T>::u_count - 1)];
+            apse::DirectionSample<T> smp;
+            if constexpr (has_iterations) {
+                int it = 0;
+                smp = sampler.sample(u, it);
+                iterations += it;
+            } else {
+                smp = sampler.sample(u);
+            }
+            accepted += smp.pdf > T(0);
+            acc += smp.direction.x + smp.pdf;
+        }
+        benchmark::DoNotOptimize(acc);
+    }
+    const double samples = double(state.iterations()) * Samples;
+    state.counters["accepted"] = benchmark::Counter(double(accepted) / samples);
+    if (has_iterations)
+        state.counters["mean_iterations"] = benchmark::Counter(double(iterations) / samples);
+}
+
+template <class Factory> void register_sampler() {
+    auto add = [](const char* type, int samples, void (*fn)(benchmark::State&)) {
+        benchmark::RegisterBenchmark(
+            (std::string(Factory::name) + "/" + type + "/" + std::to_string(samples)).c_str(), fn);
+    };
+    add("double", 1, bm_sampler<Factory, double, 1>);
+    add("double", 16, bm_sampler<Factory, double, 16>);
+    add("float", 1, bm_sampler<Factory, float, 1>);
+    add("float", 16, bm_sampler<Factory, float, 16>);
+}
+
+/// The compiler, for the JSON context (as bench_elliptic; tools/bench_table.py prints it).
+std::string compiler() {
+#if defined(__clang__)
+    return std::string("clang++ ") + __clang_version__;
+#elif defined(__GNUC__)
+    return std::string("g++ ") + __VERSION__;
+#else
+    return "unknown";
+#endif
+}
+
+/// The CPU model from /proc/cpuinfo (Linux), for the JSON context.
+std::string cpu_model() {
+    std::ifstream in("/proc/cpuinfo");
+    std::string line;
+    while (std::getline(in, line))
+        if (line.rfind("model name", 0) == 0) return line.substr(line.find(':') + 2);
+    return "unknown";
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    benchmark::Initialize(&argc, argv);
+    if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
+    benchmark::AddCustomContext("compiler", compiler());
+    benchmark::AddCustomContext("cpu_model", cpu_model());
+#if defined(NDEBUG)
+    benchmark::AddCustomContext("apse_assertions", "off (NDEBUG)");
+#else
+    benchmark::AddCustomContext("apse_assertions", "on");
+#endif
+    // Everything shared is built before any timing.
+    (void)table();
+    (void)apse_bench::disk_configs<float>();
+    (void)apse_bench::disk_configs<double>();
+
+    register_sampler<Area>();  // the reference
+    register_sampler<GamitoSingleShot>();
+    register_sampler<GamitoRetry8>();
+    register_sampler<Rectangle>();
+    register_sampler<Radial>();
+    register_sampler<LdRadial>();
+    register_sampler<Parallel>();
+    register_sampler<Tabulated>();
+    register_sampler<TabulatedLdRadial>();
+    benchmark::RunSpecifiedBenchmarks();
+    benchmark::Shutdown();
+    return 0;
+}
