@@ -15,10 +15,11 @@
 
 #include <benchmark/benchmark.h>
 
+#include "support/context.hpp"
+
 #include <array>
 #include <cmath>
 #include <cstdint>
-#include <fstream>
 #include <random>
 #include <string>
 
@@ -175,38 +176,12 @@ APSE_BM(boostnp_comp_ellint_k, k, boost::math::ellint_1(std::sqrt(x), no_promoti
 APSE_BM(boostnp_comp_ellint_pi, comp_pi, boost::math::ellint_3(std::sqrt(y), x, no_promotion()));
 #endif
 
-/// The compiler, for the JSON context (tools/bench_table.py prints it).
-std::string compiler() {
-#if defined(__clang__)
-    return std::string("clang++ ") + __clang_version__;
-#elif defined(__GNUC__)
-    return std::string("g++ ") + __VERSION__;
-#else
-    return "unknown";
-#endif
-}
-
-/// The CPU model from /proc/cpuinfo (Linux), for the JSON context.
-std::string cpu_model() {
-    std::ifstream in("/proc/cpuinfo");
-    std::string line;
-    while (std::getline(in, line))
-        if (line.rfind("model name", 0) == 0) return line.substr(line.find(':') + 2);
-    return "unknown";
-}
-
 }  // namespace
 
 int main(int argc, char** argv) {
     benchmark::Initialize(&argc, argv);
     if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
-    benchmark::AddCustomContext("compiler", compiler());
-    benchmark::AddCustomContext("cpu_model", cpu_model());
-#if defined(NDEBUG)
-    benchmark::AddCustomContext("apse_assertions", "off (NDEBUG)");
-#else
-    benchmark::AddCustomContext("apse_assertions", "on");
-#endif
+    apse_bench::add_context();
 #if defined(APSE_BENCH_HAVE_BOOST)
     benchmark::AddCustomContext("boost_version", std::to_string(BOOST_VERSION / 100000) + "." +
                                                      std::to_string(BOOST_VERSION / 100 % 1000));

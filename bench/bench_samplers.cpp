@@ -26,7 +26,8 @@
 
 #include <benchmark/benchmark.h>
 
-#include <fstream>
+#include "support/context.hpp"
+
 #include <memory>
 #include <string>
 #include <type_traits>
@@ -155,38 +156,12 @@ template <class Factory> void register_sampler() {
     add("float", 16, bm_sampler<Factory, float, 16>);
 }
 
-/// The compiler, for the JSON context (as bench_elliptic; tools/bench_table.py prints it).
-std::string compiler() {
-#if defined(__clang__)
-    return std::string("clang++ ") + __clang_version__;
-#elif defined(__GNUC__)
-    return std::string("g++ ") + __VERSION__;
-#else
-    return "unknown";
-#endif
-}
-
-/// The CPU model from /proc/cpuinfo (Linux), for the JSON context.
-std::string cpu_model() {
-    std::ifstream in("/proc/cpuinfo");
-    std::string line;
-    while (std::getline(in, line))
-        if (line.rfind("model name", 0) == 0) return line.substr(line.find(':') + 2);
-    return "unknown";
-}
-
 }  // namespace
 
 int main(int argc, char** argv) {
     benchmark::Initialize(&argc, argv);
     if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
-    benchmark::AddCustomContext("compiler", compiler());
-    benchmark::AddCustomContext("cpu_model", cpu_model());
-#if defined(NDEBUG)
-    benchmark::AddCustomContext("apse_assertions", "off (NDEBUG)");
-#else
-    benchmark::AddCustomContext("apse_assertions", "on");
-#endif
+    apse_bench::add_context();
     // Everything shared is built before any timing.
     (void)table();
     (void)apse_bench::disk_configs<float>();
