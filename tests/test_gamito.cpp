@@ -6,7 +6,7 @@
 // solid angle (cells integrated by long-double quadrature, independent of apse).
 #include <apse/baselines/gamito.hpp>
 
-#include "baselines_support.hpp"
+#include "support/statistics.hpp"
 
 #include <catch2/catch.hpp>
 

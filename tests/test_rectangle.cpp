@@ -7,7 +7,7 @@
 // O(eps) relative to those lengths, which moves the solid angle by O(eps·kappa).
 #include <apse/baselines/rectangle.hpp>
 
-#include "baselines_support.hpp"
+#include "support/statistics.hpp"
 
 #include <catch2/catch.hpp>
 

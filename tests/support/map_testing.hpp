@@ -1,12 +1,12 @@
 // Test utilities for the area-preserving maps (and any sampler with sample(u) -> {direction, pdf}):
 // the disk-cell quadrature behind the chi-square test, the chi-square test itself (pooling +
-// Šidák correction, from baselines_support.hpp), and the jittered-grid stratification estimator.
+// Šidák correction, from statistics.hpp), and the jittered-grid stratification estimator.
 // Reusable by the tabulated-map and Gamito tests. Independent of apse's own formulas: cell
 // probabilities come from quadrature of the disk's solid-angle integrand, never from the code
 // under test.
 #pragma once
 
-#include "baselines_support.hpp"
+#include "statistics.hpp"
 
 #include <cmath>
 #include <cstdint>

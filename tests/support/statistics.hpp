@@ -1,4 +1,4 @@
-// Test helpers shared by test_rectangle.cpp and test_gamito.cpp: reference-table reading, a
+// Test helpers shared by the sampler tests (rectangle, Gamito, maps, tabulated, area): table reading, a
 // seeded uniform generator, Gauss–Legendre quadrature and a Mitsuba-style chi-square test.
 // Everything here is independent of apse (no apse header is used), so it can serve as a reference.
 #pragma once
