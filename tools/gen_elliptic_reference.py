@@ -324,6 +324,17 @@ def build_tables(r):
         tb = ta * r.uniform(0.0, 1.0)
         tb = max(tb, 1e-4)
         t.add((0.0, 1.0 + tb * tb, 1.0 + ta * ta, 1.0), 'solid_angle')
+    # Complete R_J(0, y, z, p) with p/max(y, z) = 2^-k from 2^40 down to 2^-125: both sides of
+    # the switch between Bulirsch's transformation and duplication (2^-64 float, 2^-120 double).
+    # Own generator, so that the rows above stay as they were.
+    rw = random.Random(SEED + 1)
+    ks = [-40, -24, -8, 0, 8, 24, 40, 56, 62, 63, 64, 65, 66, 80, 100, 118, 119, 120, 121, 122, 125]
+    ks += [rw.randint(-40, 125) for _ in range(27)]
+    for i, k in enumerate(ks):
+        big, small = pos32(rw, 1.0, 1e4), pos32(rw, 1e-4, 1e4)
+        v = [big, min(small, big)] if i % 2 == 0 else [min(small, big), big]
+        v.insert(i % 3, 0.0)
+        t.add(v + [max(v) * 2.0 ** -k], 'complete_p_wide')
     tables.append(t)
 
     # ---- R_C(x, y) ---------------------------------------------------------------------------
