@@ -76,7 +76,7 @@ static bool projection_area_ok() {
     const auto smp = area.sample(uv);
     const auto pc = apse::detail::concentric_to_disk(uv);
     const T values[] = {
-        d.solid_angle(), el.solid_angle(), sp.solid_angle(), ed.solid_angle(), ft.solid_angle(), fa.alpha,
+        d.solid_angle(), el.solid_angle(), sp.solid_angle(), ed.solid_angle(), ft.solid_angle(), fa.alpha(),
         d.to_local(-o).z, d.to_world(o).x + T(1), d.m, d.one_minus_m, smp.pdf, area.pdf(smp.direction),
         area.invert(smp.direction).x, pc.radius, pc.angle(), apse::detail::concentric_from_disk(pc.radius, pc.turns).y,
     };
@@ -99,7 +99,7 @@ static bool tabulated_ok() {
     int it = 0;
     const T with_steps = tab.sample(u, it).pdf + tld.sample(u, it).pdf;
     const T values[] = {s.pdf, tab.pdf(s.direction), tab.invert(s.direction).x, tld.sample(u).pdf,
-                        tld.pdf(s.direction), tld.invert(s.direction).y, tld.radial().ellipse().alpha,
+                        tld.pdf(s.direction), tld.invert(s.direction).y, tld.radial().ellipse().alpha(),
                         T(apse::detail::tabulated_lambda_density(0.5, 0.5, 0.6, 0.9)), with_steps};
     for (T v : values)
         if (!apse::is_finite(v) || !(v >= T(0))) return false;

@@ -172,7 +172,7 @@ TEMPLATE_TEST_CASE("DiskAreaSampler: E[1/pdf] = Omega and the pdf integrates to 
         // int pdf d(omega) = 1: directions uniform in a cap around the ellipse's centre that
         // contains the whole ellipse, pdf() averaged times the cap's solid angle
         const auto e = apse::project_disk(o, c, nn, T(cf.r));
-        const double cap = std::fmin(double(e.alpha) * 1.2, M_PI / 2);
+        const double cap = std::fmin(double(e.alpha()) * 1.2, M_PI / 2);
         const double cap_omega = 2 * M_PI * (1 - std::cos(cap));
         double acc = 0;
         const int m = 400;

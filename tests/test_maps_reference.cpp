@@ -210,7 +210,7 @@ TEMPLATE_TEST_CASE("inversion: CDF error and iteration statistics", "[maps][refe
             sum_p += it;
             max_p = std::max(max_p, it);
             // slice of the solution psi = beta - e; edge area = half - I(psi)
-            const LD psi = LD(e.beta) - LD(pp.e);
+            const LD psi = LD(e.beta()) - LD(pp.e);
             const double ep = double(std::fabs(half - q.parallel(psi) - LD(f) * half) / half);
             worst_p = std::max(worst_p, ep);
             ++count;

@@ -60,16 +60,16 @@ template <class T> void check_invariants(const apse::SphericalEllipse<T>& e) {
     CHECK(std::fabs(glm::dot(e.x, e.z)) <= tol);
     CHECK(std::fabs(glm::dot(e.y, e.z)) <= tol);
     CHECK(glm::dot(glm::cross(e.x, e.y), e.z) > T(0.99));
-    CHECK(e.alpha >= e.beta);
-    CHECK(e.beta >= T(0));
-    CHECK(e.alpha <= apse::half_pi_v<T>);
+    CHECK(e.alpha() >= e.beta());
+    CHECK(e.beta() >= T(0));
+    CHECK(e.alpha() <= apse::half_pi_v<T>);
     CHECK(e.tan_alpha >= e.tan_beta);
     CHECK(e.tan_alpha <= apse::detail::tan_cap<T>());
     CHECK(e.m >= T(0));
     CHECK(e.m <= T(1));  // 1 - m (one_minus_m) is the accurate complement
     CHECK(e.one_minus_m > T(0));
     CHECK(e.one_minus_m <= T(1));
-    const T fields[] = {e.alpha, e.beta, e.tan_alpha, e.tan_beta, e.sin_alpha, e.sin_beta, e.cos_alpha,
+    const T fields[] = {e.alpha(), e.beta(), e.tan_alpha, e.tan_beta, e.sin_alpha, e.sin_beta, e.cos_alpha,
                         e.cos_beta, e.one_minus_cos_alpha, e.one_minus_cos_beta, e.m, e.one_minus_m};
     for (T f : fields) CHECK(apse::is_finite(f));
 }
@@ -89,8 +89,8 @@ TEMPLATE_TEST_CASE("from_tangents fills consistent derived fields", "[spherical_
             const double TA = double(T(ta)), TB = double(T(tb));  // the values actually stored
             const double tol = 4 * double(apse::epsilon<T>());
             CHECK(rel_err(e.tan_alpha, TA) == 0);
-            CHECK(rel_err(e.alpha, std::atan(TA)) <= tol);
-            CHECK(rel_err(e.beta, std::atan(TB)) <= tol);
+            CHECK(rel_err(e.alpha(), std::atan(TA)) <= tol);
+            CHECK(rel_err(e.beta(), std::atan(TB)) <= tol);
             const auto cos_of_atan = [](long double t) { return double(1.0L / std::sqrt(1.0L + t * t)); };
             const auto sin_of_atan = [](long double t) { return double(t / std::sqrt(1.0L + t * t)); };
             CHECK(rel_err(e.sin_alpha, sin_of_atan(TA)) <= tol);

@@ -217,7 +217,7 @@ TEMPLATE_TEST_CASE("tabulated: pdf within 1 % of 1/Omega for the default table",
         for (double r : kRatios) {
             const auto e = arcs<T>(a, r);
             if (e.empty()) continue;
-            const double omega = double(arcs<double>(double(e.alpha), double(e.beta) / double(e.alpha)).solid_angle());
+            const double omega = double(arcs<double>(double(e.alpha()), double(e.beta()) / double(e.alpha())).solid_angle());
             const double err = max_uniformity_error<T>(apse::TabulatedMap<T>(e, default_table().view()), omega);
             if (err > worst) { worst = err; wa = a; wr = r; }
         }

@@ -167,7 +167,8 @@ APSE_FUNC SphericalEllipse<T> project_disk(const glm::vec<3, T>& o, const glm::v
     T h2 = glm::dot(v, v);  // accurate to O(eps |w|)²: enough for alpha and beta
     // A second Gram–Schmidt pass makes v (the frame) exactly perpendicular to n when v is short
     // compared with w (off the critical path: only the frame uses it).
-    if (h2 < T(0.0625) * glm::dot(w, w)) v -= (glm::dot(v, nv) * inv_n2) * nv;
+    const bool refine = h2 < T(0.0625) * glm::dot(w, w);
+    if (refine) v -= (glm::dot(v, nv) * inv_n2) * nv;
     const vec3 n = nv * inv_n;
     const vec3 zd = wn > T(0) ? n : -n;  // from o towards the plane
     // An offset below the rounding noise of w (or so small that v / h would not be accurate) is
@@ -175,7 +176,8 @@ APSE_FUNC SphericalEllipse<T> project_disk(const glm::vec<3, T>& o, const glm::v
     const T h_min = max_of(T(8) * epsilon<T>() * detail::max_abs3(w), detail::tan_min<T>() * max_of(detail::max_abs3(w), r));
     const bool on_axis = !(h2 > h_min * h_min);
     if (on_axis) h2 = T(0);
-    const T h = std::sqrt(h2), hv = std::sqrt(glm::dot(v, v));
+    const T h = std::sqrt(h2);
+    const T hv = refine ? std::sqrt(glm::dot(v, v)) : h;  // |v| (h² = |v|² unless refined or on the axis)
     // d² + h² − r², and Delta = sqrt(T² + 4 d² r²) (the discriminant of the cone's 2×2 block)
     // (h − r)(h + r) is exact when o is exactly above the rim (h == r), which h² − r² is not
     const T t = d2 + (h - r) * (h + r);

@@ -54,10 +54,11 @@ template <class T> APSE_FUNC SinCos<T> sin_cos_of_atan(T t) noexcept {
 ///
 /// * `x, y, z`: world-space, right-handed (`x × y = z`), orthonormal frame — `x` the major axis,
 ///   `y` the minor axis, `z` the centre direction.
-/// * semi-arcs `pi/2 >= alpha >= beta >= 0` (radians, measured on the sphere from `z`), with their
-///   tangents (the gnomonic semi-axes, the primary representation: accurate from 1e-150 to the
-///   cap 2^55 in double, 2^26 in float), sines, cosines and 1 − cos computed once, without
-///   cancellation, from the two tangents.
+/// * semi-arcs `pi/2 >= alpha >= beta >= 0` (radians, measured on the sphere from `z`), stored as
+///   their tangents (the gnomonic semi-axes, the primary representation: accurate from 1e-150 to
+///   the cap 2^55 in double, 2^26 in float) with sines, cosines and 1 − cos computed once, without
+///   cancellation, from the two tangents. The arcs themselves are `alpha()` and `beta()` (one atan
+///   per call: of the maps only the parallel and tabulated ones need them, once, at set-up).
 /// * `m`, `one_minus_m`: the parameter m = k^2 = (tan^2 alpha − tan^2 beta)/(1 + tan^2 alpha) of the
 ///   ellipse's elliptic integrals (MATH.md §3) and its complement 1 − m = cos^2 alpha / cos^2 beta,
 ///   both computed without cancellation.
@@ -74,8 +75,6 @@ template <class T> struct SphericalEllipse {
     vec3 x;  ///< major-axis direction (world space, unit)
     vec3 y;  ///< minor-axis direction (world space, unit), y = z × x
     vec3 z;  ///< centre direction (world space, unit)
-    T alpha;                ///< major semi-arc, in [beta, pi/2]
-    T beta;                 ///< minor semi-arc, in [0, alpha]
     T tan_alpha;            ///< tan(alpha): gnomonic major semi-axis, <= detail::tan_cap<T>()
     T tan_beta;             ///< tan(beta): gnomonic minor semi-axis, 0 iff empty
     T sin_alpha;            ///< sin(alpha): orthographic major semi-axis
@@ -130,8 +129,6 @@ template <class T> struct SphericalEllipse {
         if (!(tb >= detail::tan_min<T>())) return make_empty();
         e.tan_alpha = ta;
         e.tan_beta = tb;
-        e.alpha = std::atan(ta);
-        e.beta = std::atan(tb);
         const detail::SinCos<T> sa = detail::sin_cos_of_atan(ta), sb = detail::sin_cos_of_atan(tb);
         e.sin_alpha = sa.s;
         e.cos_alpha = sa.c;
@@ -157,21 +154,33 @@ template <class T> struct SphericalEllipse {
         return from_tangents(x, y, z, ta, tb);
     }
 
+    /// Major semi-arc alpha = atan(tan_alpha) (radians), in [beta(), pi/2]; 0 for the empty
+    /// ellipse. Computed on each call (one atan, accurate to ~1 ulp).
+    APSE_FUNC T alpha() const noexcept { return std::atan(tan_alpha); }
+
+    /// Minor semi-arc beta = atan(tan_beta) (radians), in [0, alpha()]; 0 for the empty ellipse.
+    /// Computed on each call (one atan).
+    APSE_FUNC T beta() const noexcept { return std::atan(tan_beta); }
+
     /// True for the empty ellipse (solid angle 0: degenerate or invalid input). Maps built on an
     /// empty ellipse return pdf 0 ("no sample").
     APSE_FUNC bool empty() const noexcept { return !(tan_beta > T(0)); }
 
     /// Solid angle (steradians) of the ellipse, MATH.md §3, by the cancellation-free form
-    /// Omega = (4/3) tan(alpha) tan(beta) R_J(0, 1 + tan^2 beta, 1 + tan^2 alpha, 1).
-    /// Range (0, 2 pi] (clamped to the rounded 2 pi); 0 for the empty ellipse. Relative accuracy
-    /// a few eps of T for every ellipse (measured <= 3.2 eps from 1e-27 sr to 2 pi; the form has
-    /// no cancellation down to 1e-300 sr in double; docs/projection.md). Computed on each call
-    /// (one Carlson R_J, ~30–50 ns): maps cache it.
+    /// Omega = (4/3) tan(alpha) tan(beta) R_J(0, 1 + tan^2 beta, 1 + tan^2 alpha, 1)
+    ///       = (4/3) sin(alpha) cos(alpha) sin(beta) cos(beta) sqrt(P) R_J(0, cos^2 alpha, cos^2 beta, P),
+    /// P = cos^2 alpha cos^2 beta (homogeneity of R_J), evaluated from the stored sines and
+    /// cosines by Bulirsch's transformation (detail::cel_core, which takes the square roots
+    /// cos beta, cos alpha, sqrt(P) directly: no square root before its first step, every term
+    /// positive, 4-5 steps for most ellipses). Range (0, 2 pi] (clamped to the rounded 2 pi); 0
+    /// for the empty ellipse. Relative accuracy a few eps of T for every ellipse (measured
+    /// <= 4.5 eps from 1e-27 sr to 2 pi; no cancellation down to 1e-300 sr in double;
+    /// docs/projection.md). Computed on each call (~20-30 ns): maps cache it.
     APSE_FUNC T solid_angle() const noexcept {
         if (empty()) return T(0);
-        const T ta = tan_alpha, tb = tan_beta;
-        const T omega = T(4) / T(3) * ta * tb * carlson_rj(T(0), T(1) + tb * tb, T(1) + ta * ta, T(1));
-        return min_of(omega, two_pi_v<T>);  // a hemisphere-sized ellipse may round up past 2 pi
+        const T ca = cos_alpha, cb = cos_beta;  // cb >= ca >= 2^-55 (double), 2^-26 (float)
+        const T rj_q = detail::cel_core<T, false>(cb, ca, ca * cb).rj;
+        return min_of(T(4) / T(3) * (sin_alpha * ca) * (sin_beta * cb) * rj_q, two_pi_v<T>);  // may round past 2 pi
     }
 
     /// World → ellipse frame: (dot(w, x), dot(w, y), dot(w, z)). Any vector, any length.

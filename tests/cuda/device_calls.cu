@@ -72,7 +72,7 @@ __global__ void projection_kernel(const T* in, T* out, int n) {
     const E ft = E::from_tangents(d.x, d.y, d.z, a, T(0.5) * a);
     const E fa = E::from_arcs(d.x, d.y, d.z, a, T(0.5) * a);
     T s = d.solid_angle() + el.solid_angle() + sp.solid_angle() + ed.solid_angle() + ft.solid_angle();
-    s += fa.alpha + E::make_empty().solid_angle() + (d.empty() ? T(1) : T(0)) + (d.contains(o) ? T(1) : T(0));
+    s += fa.alpha() + E::make_empty().solid_angle() + (d.empty() ? T(1) : T(0)) + (d.contains(o) ? T(1) : T(0));
     s += d.to_local(o).x + d.to_world(o).y + d.m + d.one_minus_m;
     s += (apse::disk_faces(o, c, nrm) ? T(1) : T(0)) + (apse::ellipse_faces(o, c, u, v) ? T(1) : T(0));
     const apse::DiskAreaSampler<T> area(o, c, nrm, T(1));
@@ -112,7 +112,7 @@ __global__ void maps_disk_light_kernel(const T* in, T* out, int n) {
     const apse::DiskLight<T> light(V(0), V(a, T(0), T(-1)), V(0, 0, 1), T(1), m);
     const auto ls = light.sample(u);
     s += ls.pdf + ls.distance + ls.point.x + light.pdf(ls.direction) + light.invert(ls.direction).x + light.solid_angle();
-    s += light.ellipse().alpha + apse::sample_disk_light(V(0), V(a, T(0), T(-1)), V(0, 0, 1), T(1), m, u).pdf;
+    s += light.ellipse().alpha() + apse::sample_disk_light(V(0), V(a, T(0), T(-1)), V(0, 0, 1), T(1), m, u).pdf;
     s += apse::disk_light_pdf(V(0), V(a, T(0), T(-1)), V(0, 0, 1), T(1), ls.direction);
     out[i] = s + T(it);
 }
@@ -135,12 +135,12 @@ __global__ void tabulated_kernel(const T* in, T* out, float* table_rows, int n) 
         const apse::TabulatedMap<T> tab(e, view);
         const auto d = tab.sample(u).direction;
         int it = 0;
-        s += tab.sample(u, it).pdf + T(it) + tab.pdf(d) + tab.invert(d).x + T(tab.empty() ? 1 : 0) + tab.ellipse().alpha;
+        s += tab.sample(u, it).pdf + T(it) + tab.pdf(d) + tab.invert(d).x + T(tab.empty() ? 1 : 0) + tab.ellipse().alpha();
     } else {
         const apse::TabulatedLdRadialMap<T> tld(e, view);
         const auto d = tld.sample(u).direction;
         int it = 0;
-        s += tld.sample(u, it).pdf + T(it) + tld.pdf(d) + tld.invert(d).y + T(tld.empty() ? 1 : 0) + tld.radial().ellipse().beta;
+        s += tld.sample(u, it).pdf + T(it) + tld.pdf(d) + tld.invert(d).y + T(tld.empty() ? 1 : 0) + tld.radial().ellipse().beta();
     }
     out[i] = s;
 }

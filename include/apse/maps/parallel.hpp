@@ -56,14 +56,14 @@ public:
 
     /// Builds the map for `ellipse` (empty allowed: every sample then has pdf 0).
     APSE_FUNC explicit ParallelMap(const SphericalEllipse<T>& ellipse) noexcept
-        : ellipse_(ellipse), areas_(detail::EllipseAreas<T>::make(ellipse)) {
+        : ellipse_(ellipse), areas_(detail::EllipseAreas<T>::make(ellipse)), beta_(ellipse.beta()) {
         omega_ = detail::solid_angle_of(ellipse);
         valid_ = !ellipse.empty() && omega_ > T(0) && is_finite(omega_);
         inv_omega_ = valid_ ? T(1) / omega_ : T(0);
         half_ = T(0.5) * omega_;
         // Shape weight: the half-area relative to the (psi, x) rectangle 2 beta sin(alpha) is
         // pi/4 for a small ellipse (w = 1) and tends to 1 for wide nearly hemispherical ones (w = 0).
-        const T rect = T(2) * ellipse.beta * areas_.a;
+        const T rect = T(2) * beta_ * areas_.a;
         const T fill = rect > T(0) ? half_ / rect : T(1);
         blend_ = clamp((T(1) - fill) / (T(1) - pi_v<T> / T(4)), T(0), T(1));
     }
@@ -113,7 +113,7 @@ public:
         if (!ok) return vec2(T(0));
         const T side = l.y < T(0) ? T(-1) : T(1);
         const T psi = std::atan2(std::fabs(l.y), l.z);
-        const detail::ParallelPoint<T> p = areas_.parallel_point(clamp(ellipse_.beta - psi, T(0), ellipse_.beta));
+        const detail::ParallelPoint<T> p = areas_.parallel_point(clamp(beta_ - psi, T(0), beta_));
         const T g = clamp((half_ - areas_.parallel_half_area(p)) / half_, T(0), T(1));
         T u2 = T(0.5);
         if (p.x_max > T(0)) {
@@ -140,7 +140,7 @@ public:
     /// beyond the slice) for the slice state; `iterations` as in sample().
     APSE_FUNC detail::ParallelPoint<T> solve_half(T g, int& iterations) const noexcept {
         iterations = 0;
-        const T beta = ellipse_.beta;
+        const T beta = beta_;
         if (!(g > T(0))) return areas_.parallel_point(T(0));
         if (!(g < T(1))) return areas_.parallel_point(beta);
         const detail::ParallelAreaModel<T> model{&areas_, half_};
@@ -154,12 +154,13 @@ public:
     /// Half-area I(psi) between the slices 0 and psi in [0, beta] (MATH.md §5 I(psi),
     /// cancellation-free; for tests and diagnostics). Omega_p(psi) = Omega/2 ± I(|psi|).
     APSE_FUNC T half_area(T psi) const noexcept {
-        return areas_.parallel_half_area(areas_.parallel_point(clamp(ellipse_.beta - psi, T(0), ellipse_.beta)));
+        return areas_.parallel_half_area(areas_.parallel_point(clamp(beta_ - psi, T(0), beta_)));
     }
 
 private:
     SphericalEllipse<T> ellipse_;
     detail::EllipseAreas<T> areas_;
+    T beta_;  ///< the minor semi-arc (one atan, at set-up)
     T omega_, inv_omega_, half_, blend_;
     bool valid_;
 };

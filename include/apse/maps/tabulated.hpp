@@ -162,7 +162,7 @@ public:
         : ellipse_(ellipse), areas_(detail::EllipseAreas<T>::make(ellipse)), bins_(table.bins) {
         for (int r = 0; r < 4; ++r) { rows_[r] = table.cdf; weights_[r] = T(0); }
         valid_ = !ellipse.empty() && table.cdf != nullptr && table.bins >= 1 && table.alpha_nodes >= 2 &&
-                 table.ratio_nodes >= 2 && ellipse.alpha > T(0);
+                 table.ratio_nodes >= 2 && ellipse.tan_alpha > T(0);
         kappa_ = std::sqrt((T(1) + areas_.ca) / (T(1) + areas_.cb));
         kappa2_ = kappa_ * kappa_;
         bin_width_ = half_pi_v<T> / T(bins_ > 0 ? bins_ : 1);
@@ -174,7 +174,7 @@ public:
         pdf_scale_ = ((kappa_ / two_pi_v<T>) / areas_.a) / areas_.b;
         if (!is_finite(pdf_scale_) || !(pdf_scale_ > T(0))) { valid_ = false; pdf_scale_ = T(0); return; }
         const T fx = clamp(T(1) - std::sqrt(areas_.ca), T(0), T(1)) * T(table.alpha_nodes - 1);
-        const T fy = clamp(ellipse.beta / ellipse.alpha, T(0), T(1)) * T(table.ratio_nodes - 1);
+        const T fy = clamp(ellipse.beta() / ellipse.alpha(), T(0), T(1)) * T(table.ratio_nodes - 1);
         int i = int(fx), j = int(fy);
         if (i > table.alpha_nodes - 2) i = table.alpha_nodes - 2;
         if (j > table.ratio_nodes - 2) j = table.ratio_nodes - 2;
