@@ -29,6 +29,7 @@
 
 #include "config.hpp"
 #include "detail/glm.hpp"
+#include "detail/pairs.hpp"
 #include "detail/symmetric_eigen.hpp"
 #include "detail/vector.hpp"
 #include "math.hpp"
@@ -188,16 +189,18 @@ APSE_FUNC SphericalEllipse<T> project_disk(const glm::vec<3, T>& o, const glm::v
     // centre's polar angle theta_c from zd: (sin, cos) ∝ (h lambda, d (lambda + r²)), whose
     // norm is sqrt(lambda (lambda + r²) Delta). For T < 0 the same with lambda = 2 d² r² / D,
     // D = Delta − T (a sum of positive terms): (sin, cos) ∝ (2 d h, 2 d² + D), norm sqrt(2 G Delta).
-    T tan_alpha, tan_beta, sin_c, cos_c, norm2;
+    T tan_alpha, tan_beta, sin_c, cos_c, norm2, norm;  // norm = sqrt(norm2)
     if (t >= T(0)) {
         const T lambda = T(0.5) * (t + delta);  // >= max(d², d r)
-        const T inv_lambda = T(1) / lambda;       // (square root and divisions in parallel)
-        tan_beta = d * r / lambda;                // <= 1 (a ratio, exact even for subnormal d r)
-        tan_alpha = r * std::sqrt(lambda) * inv_lambda;
+        const T inv_lambda = T(1) / lambda;       // (square roots and division in parallel)
+        tan_beta = (d * r) * inv_lambda;          // <= 1 up to rounding (min'd with tan_alpha below)
         const T lr = lambda + r * r;
         sin_c = h * lambda;
         cos_c = d * lr;
         norm2 = lambda * lr * delta;
+        T sqrt_lambda;
+        detail::sqrt2(lambda, norm2, sqrt_lambda, norm);
+        tan_alpha = r * sqrt_lambda * inv_lambda;
     } else {
         const T big_d = delta - t;
         tan_alpha = std::sqrt(T(0.5) * big_d) / d;
@@ -206,17 +209,20 @@ APSE_FUNC SphericalEllipse<T> project_disk(const glm::vec<3, T>& o, const glm::v
         sin_c = T(2) * d * h;
         cos_c = g;
         norm2 = T(2) * g * delta;
+        norm = std::sqrt(norm2);
     }
     if (!(norm2 >= detail::square_safe_min<T>())) {  // tiny (sin, cos): normalise by rescaling
         const T cs_max = max_of(sin_c, cos_c);
         sin_c /= cs_max;
         cos_c /= cs_max;
         norm2 = sin_c * sin_c + cos_c * cos_c;
+        norm = std::sqrt(norm2);
     }
-    const T inv_norm = T(1) / std::sqrt(norm2);
+    T inv_norm, inv_hv;
+    detail::div2(T(1), norm, T(1), hv, inv_norm, inv_hv);
     sin_c *= inv_norm;
     cos_c *= inv_norm;
-    const vec3 yd = on_axis ? detail::any_perpendicular(zd) : v * (T(1) / hv);
+    const vec3 yd = on_axis ? detail::any_perpendicular(zd) : v * inv_hv;
     const vec3 xd = glm::cross(yd, zd);
     const vec3 ze = sin_c * yd + cos_c * zd;
     const vec3 ye = cos_c * yd - sin_c * zd;

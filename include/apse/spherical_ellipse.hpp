@@ -10,6 +10,7 @@
 
 #include "config.hpp"
 #include "detail/glm.hpp"
+#include "detail/pairs.hpp"
 #include "elliptic.hpp"
 #include "math.hpp"
 
@@ -36,14 +37,21 @@ template <class T> APSE_FUNC constexpr T tan_min() noexcept {
 /// sin, cos and 1 − cos of atan(t) for 0 <= t <= tan_cap (so t² cannot overflow), without
 /// cancellation and without a branch: with q = 1 + t², R = 1 / (sqrt(q) (q + sqrt(q))),
 /// cos = 1/sqrt(q) = (q + sqrt(q)) R, 1 − cos = t²/(q + sqrt(q)) = t² sqrt(q) R, sin = t cos.
+/// Both tangents of an ellipse at once, their square roots and divisions paired (detail::sqrt2,
+/// detail::div2; bit-identical to one at a time).
 template <class T> struct SinCos {
     T s, c, omc;
 };
-template <class T> APSE_FUNC SinCos<T> sin_cos_of_atan(T t) noexcept {
-    const T t2 = t * t, q = T(1) + t2, sq = std::sqrt(q), qs = q + sq;
-    const T rr = T(1) / (sq * qs);
-    const T c = qs * rr;
-    return {t * c, c, t2 * sq * rr};
+template <class T> APSE_FUNC void sin_cos_of_atan2(T ta, T tb, SinCos<T>& a, SinCos<T>& b) noexcept {
+    const T ta2 = ta * ta, tb2 = tb * tb, qa = T(1) + ta2, qb = T(1) + tb2;
+    T sqa, sqb;
+    sqrt2(qa, qb, sqa, sqb);
+    const T qsa = qa + sqa, qsb = qb + sqb;
+    T ra, rb;
+    div2(T(1), sqa * qsa, T(1), sqb * qsb, ra, rb);
+    const T ca = qsa * ra, cb = qsb * rb;
+    a = {ta * ca, ca, ta2 * sqa * ra};
+    b = {tb * cb, cb, tb2 * sqb * rb};
 }
 
 }  // namespace detail
@@ -129,7 +137,8 @@ template <class T> struct SphericalEllipse {
         if (!(tb >= detail::tan_min<T>())) return make_empty();
         e.tan_alpha = ta;
         e.tan_beta = tb;
-        const detail::SinCos<T> sa = detail::sin_cos_of_atan(ta), sb = detail::sin_cos_of_atan(tb);
+        detail::SinCos<T> sa, sb;
+        detail::sin_cos_of_atan2(ta, tb, sa, sb);
         e.sin_alpha = sa.s;
         e.cos_alpha = sa.c;
         e.sin_beta = sb.s;

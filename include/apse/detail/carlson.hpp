@@ -25,7 +25,7 @@
 ///
 /// Speed on x86-64 (see docs/elliptic.md) is bound by the square-root unit: a duplication step
 /// needs three roots (four for R_J) whose latency chains into the next step, and the unit takes a
-/// new double root only every ~8 cycles; sqrt2 pairs them in one SSE2 instruction. Branches whose
+/// new double root only every ~8 cycles; sqrt2 (detail/pairs.hpp) pairs them in one SSE2 instruction. Branches whose
 /// outcome depends on the chain (loop exits, rc1's cases) are kept few: a mispredicted one
 /// discards the duplication steps already in flight behind it.
 
@@ -33,15 +33,7 @@
 
 #include "../config.hpp"
 #include "../math.hpp"
-
-
-// SSE2 (every x86-64 host compiler; not in CUDA device code): see sqrt2.
-#if (defined(__SSE2__) || defined(_M_X64)) && !defined(__CUDA_ARCH__)
-#include <emmintrin.h>
-#define APSE_CARLSON_SSE2 1
-#else
-#define APSE_CARLSON_SSE2 0
-#endif
+#include "pairs.hpp"
 
 namespace apse {
 namespace detail {
@@ -165,23 +157,6 @@ template <class T> APSE_FUNC APSE_NOINLINE T rc_core(T x, T y) noexcept {
         return (std::log(sx + sd) - std::log(sy)) / sd;  // the ratio overflows: y / x < eps^2
     }
     return T(1) / std::sqrt(x);
-}
-
-/// Square roots of two values. On x86-64 in double they share one SSE2 `sqrtpd`: the square
-/// root unit is not fully pipelined there (one sqrtsd per ~8 cycles, 20 cycles latency), so
-/// every extra root delays a duplication step (measured: R_F -12%, R_J -9% with pairs). The
-/// results are identical (IEEE square roots are correctly rounded either way).
-template <class T> APSE_FUNC void sqrt2(T x, T y, T& sx, T& sy) noexcept {
-#if APSE_CARLSON_SSE2
-    if constexpr (sizeof(T) == sizeof(double)) {
-        const __m128d r = _mm_sqrt_pd(_mm_set_pd(double(y), double(x)));
-        sx = T(_mm_cvtsd_f64(r));
-        sy = T(_mm_cvtsd_f64(_mm_unpackhi_pd(r, r)));
-        return;
-    }
-#endif
-    sx = std::sqrt(x);
-    sy = std::sqrt(y);
 }
 
 /// One duplication step on (x, y, z): replaces each argument v by (v + lambda)/4,
