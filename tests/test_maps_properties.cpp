@@ -160,7 +160,7 @@ TEMPLATE_TEST_CASE("inverse round trips", "[maps][inverse]", float, double) {
                 sizeof(T) == 4 ? "float" : "double", worst_u, worst_w);
 }
 
-TEMPLATE_TEST_CASE("the square's boundary maps onto the ellipse's boundary; seams", "[maps][boundary]", float, double) {
+TEMPLATE_TEST_CASE("the square's boundary maps onto the ellipse's boundary, and the seams", "[maps][boundary]", float, double) {
     using T = TestType;
     // Boundary: g = (x/(z tan a))^2 + (y/(z tan b))^2 = 1; its rounding error is a few eps times
     // 1/z (z = cos theta is computed as 1 - (1 - cos theta), absolute error eps): tolerance

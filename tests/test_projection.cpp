@@ -598,7 +598,7 @@ TEMPLATE_TEST_CASE("on the axis: alpha = beta, deterministic orthonormal frame",
     }
 }
 
-TEMPLATE_TEST_CASE("approaching the surface: Omega -> 2 pi; grazing the plane: Omega -> 0", "[projection][disk]", float, double) {
+TEMPLATE_TEST_CASE("approaching the surface: Omega -> 2 pi, grazing the plane: Omega -> 0", "[projection][disk]", float, double) {
     using T = TestType;
     const vec3<T> c(0, 0, 0), n(0, 0, 1);
     T prev = T(0);

@@ -254,7 +254,7 @@ TEST_CASE("tabulated: max |pdf Omega - 1| against table size (report)", "[.][tab
 #undef APSE_REPORT
 }
 
-TEMPLATE_TEST_CASE("tabulated: sample, pdf and invert agree; samples inside", "[tabulated][properties]", float, double) {
+TEMPLATE_TEST_CASE("tabulated: sample, pdf and invert agree, samples inside", "[tabulated][properties]", float, double) {
     using T = TestType;
     // pdf(direction) recomputes the density from the direction's azimuth: equal to sample()'s up
     // to rounding (relative 1e-3 float / 1e-9 double: lambda is recovered through atan2 and may

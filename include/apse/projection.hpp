@@ -192,15 +192,14 @@ APSE_FUNC SphericalEllipse<T> project_disk(const glm::vec<3, T>& o, const glm::v
     T tan_alpha, tan_beta, sin_c, cos_c, norm2, norm;  // norm = sqrt(norm2)
     if (t >= T(0)) {
         const T lambda = T(0.5) * (t + delta);  // >= max(d², d r)
-        const T inv_lambda = T(1) / lambda;       // (square roots and division in parallel)
-        tan_beta = (d * r) * inv_lambda;          // <= 1 up to rounding (min'd with tan_alpha below)
         const T lr = lambda + r * r;
         sin_c = h * lambda;
         cos_c = d * lr;
         norm2 = lambda * lr * delta;
         T sqrt_lambda;
         detail::sqrt2(lambda, norm2, sqrt_lambda, norm);
-        tan_alpha = r * sqrt_lambda * inv_lambda;
+        // tan beta <= 1: a ratio, exact even for subnormal d r and lambda (1/lambda would overflow)
+        detail::div2(r, sqrt_lambda, d * r, lambda, tan_alpha, tan_beta);
     } else {
         const T big_d = delta - t;
         tan_alpha = std::sqrt(T(0.5) * big_d) / d;

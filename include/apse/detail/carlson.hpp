@@ -405,16 +405,33 @@ APSE_FUNC RfRj<T> rj_scaled(T x, T y, T z, T p) noexcept {
 /// and (p - y)(q - y) = (x - y)(z - y), i.e. q = y - (y - x)(z - y)/(p - y) in [x, y]:
 ///   R_J(x,y,z,p) = (3 R_F(x,y,z) - 3 R_C(x z/y, p q/y) + (y - q) R_J(x,y,z,q)) / (p - y),
 /// whose terms do not cancel (R_C ~ log(p)/sqrt(p) << R_F) and whose R_J has a moderate q.
+///
+/// The reduction runs on the arguments scaled by 4^-k so that the largest of x, y, z is in
+/// [1/4, 4) (exact; homogeneity scales the results back), so that its intermediate R_J, which
+/// does not involve p, cannot overflow where the result itself does not (e.g. arguments ~1e-28
+/// in float: R_J(x, y, z, q) ~ 1e42, R_J(x, y, z, p) ~ 1e35). If p overflows in the scaled
+/// units (p / max > ~2^126 in float), R_J = 3 R_F / p to within (max / p)^(1/2) log(p / max).
 template <class T, bool WithRf = false>
 APSE_FUNC RfRj<T> rj_core(T x, T y, T z, T p) noexcept {
-    const T top = max_of(max_of(x, y), z);
+    T top = max_of(max_of(x, y), z);
     if (!(p > T(0x1p16) * top)) return rj_scaled<T, WithRf>(x, y, z, p);
+    int ex = 0;
+    (void)std::frexp(top, &ex);
+    const int k = ex / 2;
+    x = std::ldexp(x, -2 * k), y = std::ldexp(y, -2 * k), z = std::ldexp(z, -2 * k);  // exact
+    top = std::ldexp(top, -2 * k);
+    const T ps = std::ldexp(p, -2 * k);  // may overflow: see above
     const T lo = min_of(min_of(x, y), z), mid = max_of(min_of(x, y), min_of(max_of(x, y), z));
-    const T shift = (mid - lo) * ((top - mid) / (p - mid));  // y - q >= 0
+    if (!is_finite(ps)) {
+        const T rf = std::ldexp(rf_core(x, y, z), -k);  // R_F(v) = 2^-k R_F(4^-k v)
+        return {rf, T(3) * rf / p};
+    }
+    const T shift = (mid - lo) * ((top - mid) / (ps - mid));  // y - q >= 0
     const T q = mid - shift;
     const RfRj<T> r = rj_scaled<T, true>(x, y, z, q);
-    const T rc = rc_core(top * (lo / mid), p * (q / mid));
-    return {r.rf, (T(3) * (r.rf - rc) + shift * r.rj) / (p - mid)};
+    const T rc = rc_core(top * (lo / mid), ps * (q / mid));
+    // R_F(v) = 2^-k R_F(4^-k v), R_J(v) = 8^-k R_J(4^-k v)
+    return {std::ldexp(r.rf, -k), std::ldexp((T(3) * (r.rf - rc) + shift * r.rj) / (ps - mid), -3 * k)};
 }
 
 /// R_D(x, y, z) for valid finite arguments (z > 0, at most one of x, y zero):
