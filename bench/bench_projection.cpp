@@ -11,9 +11,9 @@
 //       --benchmark_enable_random_interleaving=true --benchmark_report_aggregates_only=true
 //
 // At the end the ratio (project_disk + solid_angle) / area sampling is printed per type, from
-// the medians when repetitions are requested, and then measured once more pairwise (rounds of
-// one pass of each, back to back: print_paired_ratio), the figure the README reports (the
-// goal: <= 2 in double). "project_disk + solid_angle" keeps the whole ellipse observable
+// the medians when repetitions are requested (the goal: <= 2 in double). On a shared machine
+// the timings drift by up to +-30 % between runs; random interleaving of the repetitions
+// spreads that drift over all benchmarks alike. "project_disk + solid_angle" keeps the whole ellipse observable
 // (DoNotOptimize), since a sampler needs all of it: otherwise the compiler drops the frame and
 // the sines and cosines the solid angle does not use, and the time depends on its inlining.
 #include <apse/baselines/area.hpp>
@@ -21,12 +21,9 @@
 
 #include <benchmark/benchmark.h>
 
-#include <algorithm>
 #include <array>
-#include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <cstdlib>
 #include <map>
 #include <random>
 #include <string>
@@ -173,39 +170,6 @@ private:
     std::map<std::string, double> median_, single_;
 };
 
-/// The ratio (project_disk + solid_angle) / area sampling measured in `rounds` rounds of one
-/// pass over the inputs each, back to back: the median of the per-round ratios. Each round lasts
-/// ~0.2 ms, so slow drifts of a shared machine's speed (which move the separately timed
-/// benchmarks above by up to +-30 % between runs) cancel in each ratio.
-template <class T> void print_paired_ratio(const char* type, int rounds) {
-    const Inputs<T>& in = inputs<T>();
-    const glm::vec<3, T> c(0), n(0, 0, 1);
-    auto pass_ns = [](auto&& body) {
-        const auto t0 = std::chrono::steady_clock::now();
-        for (std::size_t i = 0; i < kInputs; ++i) body(i);
-        return std::chrono::duration<double, std::nano>(std::chrono::steady_clock::now() - t0).count() / kInputs;
-    };
-    std::vector<double> area(rounds), proj(rounds), ratio(rounds);
-    for (int k = 0; k < rounds; ++k) {
-        area[k] = pass_ns([&](std::size_t i) {
-            const apse::DiskAreaSampler<T> s(in.o[i], c, n, T(1));
-            benchmark::DoNotOptimize(s.sample(in.u[i]));
-        });
-        proj[k] = pass_ns([&](std::size_t i) {
-            apse::SphericalEllipse<T> e = apse::project_disk(in.o[i], c, n, T(1));
-            benchmark::DoNotOptimize(e);
-            benchmark::DoNotOptimize(e.solid_angle());
-        });
-        ratio[k] = proj[k] / area[k];
-    }
-    auto median = [](std::vector<double> v) {
-        std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
-        return v[v.size() / 2];
-    };
-    std::printf("paired ratio (project_disk + solid_angle) / area sampling <%s>: %.2f  (median of %d rounds; "
-                "%.1f ns / %.1f ns)\n", type, median(ratio), rounds, median(proj), median(area));
-}
-
 template <class T> void register_all(const char* type) {
     const std::string t = std::string("<") + type + ">";
     benchmark::RegisterBenchmark(("area_sample" + t).c_str(), area_sample<T>);
@@ -223,23 +187,10 @@ int main(int argc, char** argv) {
     register_all<float>("float");
     register_all<double>("double");
     benchmark::Initialize(&argc, argv);
-    // --paired_rounds=N (default 400; 0 skips the paired measurement)
-    int rounds = 400;
-    int kept = 1;
-    for (int i = 1; i < argc; ++i) {
-        const std::string a = argv[i], key = "--paired_rounds=";
-        if (a.compare(0, key.size(), key) == 0) rounds = std::atoi(a.c_str() + key.size());
-        else argv[kept++] = argv[i];
-    }
-    argc = kept;
     if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
     RatioReporter reporter;
     benchmark::RunSpecifiedBenchmarks(&reporter);
     reporter.print_ratios();
-    if (rounds > 0) {
-        print_paired_ratio<float>("float", rounds);
-        print_paired_ratio<double>("double", rounds);
-    }
     benchmark::Shutdown();
     return 0;
 }

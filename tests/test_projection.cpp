@@ -278,6 +278,38 @@ TEMPLATE_TEST_CASE("project_disk against the mpmath table", "[projection][disk]"
     stats.print("disk", type_name(T()));
 }
 
+TEMPLATE_TEST_CASE("project_disk's closed-form fields agree with from_tangents of its tangents", "[projection][disk]",
+                   float, double) {
+    // project_disk fills sin, cos, 1 − cos and m from lambda directly (not via the tangents);
+    // from_tangents derives them from the two tangents alone (tested against atan in
+    // test_spherical_ellipse). Both round independently: they agree to a few eps, relative to each
+    // field (1 − cos and m relative to their own size, as both are computed without cancellation).
+    using T = TestType;
+    const Table t = load("disks.csv");
+    double worst = 0;
+    for (const auto& f : t.rows) {
+        const Row r{&t, &f};
+        const auto e = apse::project_disk(r.v<T>("o"), r.v<T>("c"), r.v<T>("n"), T(r.num("r")));
+        if (e.empty()) continue;
+        const auto g = apse::SphericalEllipse<T>::from_tangents(e.x, e.y, e.z, e.tan_alpha, e.tan_beta);
+        const T got[] = {e.sin_alpha, e.cos_alpha, e.one_minus_cos_alpha, e.sin_beta, e.cos_beta, e.one_minus_cos_beta,
+                         e.m, e.one_minus_m};
+        const T ref[] = {g.sin_alpha, g.cos_alpha, g.one_minus_cos_alpha, g.sin_beta, g.cos_beta, g.one_minus_cos_beta,
+                         g.m, g.one_minus_m};
+        INFO(r.str("case") << " tan alpha " << e.tan_alpha << " tan beta " << e.tan_beta);
+        for (int i = 0; i < 8; ++i) {
+            INFO("field " << i << ": " << got[i] << " vs " << ref[i]);
+            // (m: both are (ta − tb)(ta + tb) times 1/(1 + ta²) resp. cos² alpha, so relative too)
+            const double err = ref[i] == T(0) ? double(std::fabs(got[i]))
+                                              : std::fabs(double(got[i]) - double(ref[i])) / double(ref[i]);
+            CHECK(err <= 8 * double(apse::epsilon<T>()));
+            worst = std::fmax(worst, err / double(apse::epsilon<T>()));
+        }
+        CHECK(e.tan_beta <= e.tan_alpha);
+    }
+    std::printf("project_disk fields vs from_tangents <%s>: worst %.2f eps\n", type_name(T()), worst);
+}
+
 TEMPLATE_TEST_CASE("project_ellipse against the mpmath table", "[projection][ellipse]", float, double) {
     using T = TestType;
     const Table t = load("ellipses.csv");

@@ -185,48 +185,76 @@ APSE_FUNC SphericalEllipse<T> project_disk(const glm::vec<3, T>& o, const glm::v
     const T two_dr = T(2) * d * r;
     const T delta2 = t * t + T(4) * d2 * (r * r);
     const T delta = delta2 >= detail::square_safe_min<T>() ? std::sqrt(delta2) : detail::hypot2(t, two_dr);
-    // tan alpha = r / sqrt(lambda), tan beta = r d / lambda with lambda = (T + Delta)/2, and the
-    // centre's polar angle theta_c from zd: (sin, cos) ∝ (h lambda, d (lambda + r²)), whose
-    // norm is sqrt(lambda (lambda + r²) Delta). For T < 0 the same with lambda = 2 d² r² / D,
-    // D = Delta − T (a sum of positive terms): (sin, cos) ∝ (2 d h, 2 d² + D), norm sqrt(2 G Delta).
-    T tan_alpha, tan_beta, sin_c, cos_c, norm2, norm;  // norm = sqrt(norm2)
+    // lambda = (T + Delta)/2, the cone's largest in-plane eigenvalue: tan alpha = r / sqrt(lambda),
+    // tan beta = r d / lambda. For T < 0, D = Delta − T (a sum of positive terms) gives them
+    // without cancellation: tan alpha = sqrt(D/2)/d, tan beta = D/(2 d r), lambda = d r / tan beta.
+    // (sin_c, cos_c) ∝ (sin, cos) of the centre's polar angle theta_c from zd (the cone's axis):
+    // (h lambda, d (lambda + r²)), for T < 0 the same times D/(d r²): (2 d h, 2 d² + D).
+    T lambda, tan_alpha, tan_beta, sin_c, cos_c;
     if (t >= T(0)) {
-        const T lambda = T(0.5) * (t + delta);  // >= max(d², d r)
-        const T lr = lambda + r * r;
-        sin_c = h * lambda;
-        cos_c = d * lr;
-        norm2 = lambda * lr * delta;
-        T sqrt_lambda;
-        detail::sqrt2(lambda, norm2, sqrt_lambda, norm);
+        lambda = T(0.5) * (t + delta);  // >= max(d², d r)
         // tan beta <= 1: a ratio, exact even for subnormal d r and lambda (1/lambda would overflow)
-        detail::div2(r, sqrt_lambda, d * r, lambda, tan_alpha, tan_beta);
+        detail::div2(r, std::sqrt(lambda), d * r, lambda, tan_alpha, tan_beta);
+        sin_c = h * lambda;
+        cos_c = d * (lambda + r * r);
     } else {
         const T big_d = delta - t;
-        tan_alpha = std::sqrt(T(0.5) * big_d) / d;
-        tan_beta = big_d / two_dr;
-        const T g = T(2) * d * d + big_d;
+        detail::div2(std::sqrt(T(0.5) * big_d), d, big_d, two_dr, tan_alpha, tan_beta);
+        lambda = (d * r) / tan_beta;
         sin_c = T(2) * d * h;
-        cos_c = g;
-        norm2 = T(2) * g * delta;
-        norm = std::sqrt(norm2);
+        cos_c = T(2) * d * d + big_d;
     }
-    if (!(norm2 >= detail::square_safe_min<T>())) {  // tiny (sin, cos): normalise by rescaling
-        const T cs_max = max_of(sin_c, cos_c);
-        sin_c /= cs_max;
-        cos_c /= cs_max;
-        norm2 = sin_c * sin_c + cos_c * cos_c;
-        norm = std::sqrt(norm2);
+    tan_beta = min_of(tan_beta, tan_alpha);
+    const vec3 yd = on_axis ? detail::any_perpendicular(zd) : v * (T(1) / hv);
+    const vec3 xd = glm::cross(yd, zd);
+    // Every other field in closed form from lambda, without going through the tangents (shorter
+    // dependency chains, fewer square roots and divisions than from_tangents): with
+    // A = sqrt(lambda + r²), B = sqrt(lambda Delta) (lambda Delta = lambda² + d² r²),
+    //   cos alpha = sqrt(lambda)/A, sin alpha = r/A, 1 − cos alpha = r²/(A (A + sqrt lambda)),
+    //   cos beta = lambda/B, sin beta = d r/B, 1 − cos beta = d² r²/(B (B + lambda)),
+    //   1 − m = cos² alpha / cos² beta = Delta/A², and the centre's polar angle theta_c from zd,
+    //   (sin, cos) = (h lambda, d (lambda + r²)) / (A B) (the cone's axis).
+    // Beyond the tangent cap, below the tangent floor, or where lambda² would underflow (subnormal
+    // heights in float), from_tangents builds the ellipse from the two tangents instead (capping,
+    // emptying, rescaling: the rare path).
+    if (tan_alpha <= detail::tan_cap<T>() && tan_beta >= detail::tan_min<T>() &&
+        lambda * lambda >= detail::square_safe_min<T>()) {
+        const T lr = lambda + r * r;
+        T sl, a_root, d_root;
+        sl = std::sqrt(lambda);
+        detail::sqrt2(lr, delta, a_root, d_root);
+        const T b_root = sl * d_root, dr = d * r;
+        T ra, rb;  // 1/(A (A + sqrt lambda)), 1/(B (B + lambda))
+        detail::div2(T(1), a_root * (a_root + sl), T(1), b_root * (b_root + lambda), ra, rb);
+        const T inv_a = (a_root + sl) * ra, inv_b = (b_root + lambda) * rb;
+        const T inv_ab = inv_a * inv_b;
+        sin_c = h * lambda * inv_ab;  // the same in both cases: lambda is accurate now
+        cos_c = d * lr * inv_ab;
+        E e;
+        e.x = xd;
+        e.y = cos_c * yd - sin_c * zd;
+        e.z = sin_c * yd + cos_c * zd;
+        e.tan_alpha = tan_alpha;
+        e.tan_beta = tan_beta;
+        e.sin_alpha = r * inv_a;
+        e.cos_alpha = sl * inv_a;
+        e.one_minus_cos_alpha = r * r * ra;
+        e.sin_beta = dr * inv_b;
+        e.cos_beta = lambda * inv_b;
+        e.one_minus_cos_beta = dr * dr * rb;
+        e.one_minus_m = delta * inv_a * inv_a;
+        e.m = (tan_alpha - tan_beta) * (tan_alpha + tan_beta) * (e.cos_alpha * e.cos_alpha);
+        return e;
     }
-    T inv_norm, inv_hv;
-    detail::div2(T(1), norm, T(1), hv, inv_norm, inv_hv);
+    // The centre's polar angle, normalised by rescaling (its norm² may underflow here).
+    const T cs_max = max_of(sin_c, cos_c);
+    sin_c /= cs_max;
+    cos_c /= cs_max;
+    const T inv_norm = T(1) / std::sqrt(sin_c * sin_c + cos_c * cos_c);
     sin_c *= inv_norm;
     cos_c *= inv_norm;
-    const vec3 yd = on_axis ? detail::any_perpendicular(zd) : v * inv_hv;
-    const vec3 xd = glm::cross(yd, zd);
-    const vec3 ze = sin_c * yd + cos_c * zd;
-    const vec3 ye = cos_c * yd - sin_c * zd;
     // A NaN here (only for pathologically underflowing d r) makes from_tangents return empty.
-    return E::from_tangents(xd, ye, ze, tan_alpha, min_of(tan_beta, tan_alpha));
+    return E::from_tangents(xd, cos_c * yd - sin_c * zd, sin_c * yd + cos_c * zd, tan_alpha, tan_beta);
 }
 
 /// True if `o` is strictly on the side of the ellipse's plane that semi_axis_u × semi_axis_v
