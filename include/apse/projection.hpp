@@ -122,7 +122,8 @@ APSE_FUNC bool disk_faces(const glm::vec<3, T>& o, const glm::vec<3, T>& center,
 /// foot of o to the centre, T = d² + h² − r², Delta = sqrt(T² + 4d²r²), lambda = (T + Delta)/2:
 /// tan alpha = r/sqrt(lambda), tan beta = r d/lambda (rewritten without cancellation when T < 0);
 /// the major axis x is perpendicular to the plane through o, the centre and the normal, and the
-/// centre direction z is the cone's axis (no trigonometric call but the two atan of alpha, beta).
+/// centre direction z is the cone's axis; the sines, cosines and m come from lambda in closed form
+/// too (no trigonometric call; docs/projection.md "Methods").
 /// Domain: `normal` any finite non-zero vector (only its direction is used: it is normalised);
 /// `radius` > 0; two-sided (use `disk_faces` to cull one-sided emitters).
 /// On the disk's axis alpha = beta and the frame is a deterministic function of the normal.
