@@ -242,7 +242,7 @@ APSE_FUNC SphericalEllipse<T> project_disk(const glm::vec<3, T>& o, const glm::v
         e.one_minus_cos_alpha = r * r * ra;
         e.sin_beta = dr * inv_b;
         e.cos_beta = lambda * inv_b;
-        e.one_minus_cos_beta = dr * dr * rb;
+        e.one_minus_cos_beta = dr * (dr * rb);  // (dr² alone may be subnormal in float)
         e.one_minus_m = delta * inv_a * inv_a;
         e.m = (tan_alpha - tan_beta) * (tan_alpha + tan_beta) * (e.cos_alpha * e.cos_alpha);
         return e;
