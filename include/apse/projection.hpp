@@ -191,17 +191,19 @@ APSE_FUNC SphericalEllipse<T> project_disk(const glm::vec<3, T>& o, const glm::v
     // without cancellation: tan alpha = sqrt(D/2)/d, tan beta = D/(2 d r), lambda = d r / tan beta.
     // (sin_c, cos_c) ∝ (sin, cos) of the centre's polar angle theta_c from zd (the cone's axis):
     // (h lambda, d (lambda + r²)), for T < 0 the same times D/(d r²): (2 d h, 2 d² + D).
-    T lambda, tan_alpha, tan_beta, sin_c, cos_c;
+    T lambda, sl, tan_alpha, tan_beta, sin_c, cos_c;  // sl = sqrt(lambda)
     if (t >= T(0)) {
         lambda = T(0.5) * (t + delta);  // >= max(d², d r)
+        sl = std::sqrt(lambda);
         // tan beta <= 1: a ratio, exact even for subnormal d r and lambda (1/lambda would overflow)
-        detail::div2(r, std::sqrt(lambda), d * r, lambda, tan_alpha, tan_beta);
+        detail::div2(r, sl, d * r, lambda, tan_alpha, tan_beta);
         sin_c = h * lambda;
         cos_c = d * (lambda + r * r);
     } else {
         const T big_d = delta - t;
         detail::div2(std::sqrt(T(0.5) * big_d), d, big_d, two_dr, tan_alpha, tan_beta);
         lambda = (d * r) / tan_beta;
+        sl = std::sqrt(lambda);
         sin_c = T(2) * d * h;
         cos_c = T(2) * d * d + big_d;
     }
@@ -221,8 +223,7 @@ APSE_FUNC SphericalEllipse<T> project_disk(const glm::vec<3, T>& o, const glm::v
     if (tan_alpha <= detail::tan_cap<T>() && tan_beta >= detail::tan_min<T>() &&
         lambda * lambda >= detail::square_safe_min<T>()) {
         const T lr = lambda + r * r;
-        T sl, a_root, d_root;
-        sl = std::sqrt(lambda);
+        T a_root, d_root;
         detail::sqrt2(lr, delta, a_root, d_root);
         const T b_root = sl * d_root, dr = d * r;
         T ra, rb;  // 1/(A (A + sqrt lambda)), 1/(B (B + lambda))
