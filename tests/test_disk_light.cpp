@@ -8,11 +8,17 @@
 
 #include <cmath>
 #include <limits>
+#include <type_traits>
 
 namespace {
 template <class T> using Vec2 = glm::vec<2, T>;
 template <class T> using Vec3 = glm::vec<3, T>;
 const apse::DiskMap kMaps[] = {apse::DiskMap::radial, apse::DiskMap::ld_radial, apse::DiskMap::parallel};
+// Passed to GPU kernels by value: plain data. It holds only the chosen map (a union).
+static_assert(std::is_trivially_copyable<apse::DiskLight<float>>::value, "DiskLight must be trivially copyable");
+static_assert(std::is_trivially_copyable<apse::DiskLight<double>>::value, "DiskLight must be trivially copyable");
+static_assert(sizeof(apse::DiskLight<double>) < sizeof(apse::LdRadialMap<double>) + sizeof(apse::ParallelMap<double>),
+              "DiskLight holds one map, not both");
 }  // namespace
 
 TEMPLATE_TEST_CASE("disk light: point, distance and pdf", "[disk_light]", float, double) {
