@@ -25,9 +25,9 @@
 ///
 /// Speed on x86-64 (see docs/elliptic.md) is bound by the square-root unit: a duplication step
 /// needs three roots (four for R_J) whose latency chains into the next step, and the unit takes a
-/// new double root only every ~8 cycles; sqrt2 (detail/pairs.hpp) pairs them in one SSE2 instruction. Branches whose
-/// outcome depends on the chain (loop exits, rc1's cases) are kept few: a mispredicted one
-/// discards the duplication steps already in flight behind it.
+/// new double root only every ~8 cycles; sqrt2 (detail/pairs.hpp) pairs them in one SSE
+/// instruction. Branches whose outcome depends on the chain (loop exits, rc1's cases) are kept
+/// few: a mispredicted one discards the duplication steps already in flight behind it.
 
 #include <cmath>
 
@@ -235,9 +235,10 @@ template <class T> APSE_FUNC APSE_NOINLINE T agm_rf(T y, T z) noexcept {
 /// transformation of his generalised complete integral cel (R. Bulirsch, Numer. Math. 13 (1969)
 /// 305-315), written homogeneously in (y, z, p). With A = sqrt z, G = sqrt y,
 ///   R_J(0, y, z, p) = 3 int_0^(pi/2) sin^2 t dt / ((A^2 cos^2 t + p sin^2 t) sqrt(A^2 cos^2 t + G^2 sin^2 t))
-/// (DLMF 19.25.2 with the substitution of DLMF 19.25.5), and one Gauss transformation of the
-/// integration variable maps (A, G) to (A + G, 2 sqrt(A G)) and the rest of the integrand, kept
-/// as (a cos^2 t + b sin^2 t)/(A^2 cos^2 t + q^2 sin^2 t)-like coefficients a, b, q, to
+/// (from DLMF 19.25.2, Pi(n|m) - K(m) = (n/3) R_J(0, 1 - m, 1, 1 - n), and homogeneity), and one
+/// Gauss transformation of the integration variable maps (A, G) to (A + G, 2 sqrt(A G)) and the
+/// rest of the integrand, kept as (a cos^2 t + b sin^2 t)/(A^2 cos^2 t + q^2 sin^2 t)-like
+/// coefficients a, b, q, to
 ///   a' = a + b/q,  b' = 2 (b + a A G / q),  q' = q + A G / q,
 /// from a = 0, b = 1/sqrt p, q = sqrt p. Once A = G (to sqrt(eps), the truncation error is
 /// below 0.12 (1 - G/A)^2 <= eps/8, measured at 60 digits) the integral is elementary:
