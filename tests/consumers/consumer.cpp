@@ -5,6 +5,13 @@
 #include <cmath>
 #include <cstdio>
 
+#if defined(APSE_PACKAGE_VERSION_MAJOR)  // set by the find_package consumer from the package
+static_assert(APSE_VERSION_MAJOR == APSE_PACKAGE_VERSION_MAJOR &&
+                  APSE_VERSION_MINOR == APSE_PACKAGE_VERSION_MINOR &&
+                  APSE_VERSION_PATCH == APSE_PACKAGE_VERSION_PATCH,
+              "the installed package's version differs from the headers' APSE_VERSION_*");
+#endif
+
 int main() {
     // R_F(1, 2, 0) = 1.3110287771461 (Carlson 1995, table 1).
     const double rf = apse::carlson_rf(1.0, 2.0, 0.0);
