@@ -1,9 +1,7 @@
 #!/usr/bin/env python3
 """Numerical check of the formulas written in docs/math.md, at 40 digits with mpmath.
 
-    python3 tools/check_math_notes.py               # ~30 s on one core; exit status 1 on a failure
-    python3 tools/check_math_notes.py --references  # only: every file, symbol and test case that
-                                                    # docs/math.md names exists in the tree
+    python3 tools/check_math_notes.py          # ~30 s on one core; exit status 1 on a failure
 
 Each check compares a formula of docs/math.md with an independent evaluation: quadrature of its
 definition, a geometric construction, ray/shape membership, mpmath's own elliptic integrals, or
@@ -12,13 +10,12 @@ fails if it exceeds the check's bound. It also prints the numbers docs/math.md q
 from a formula rather than from the library (the §4 first-guess errors, the §6 ratios of the
 authors' Newton derivative, the §6 acceptance of the authors' tabulation, the §10 values).
 This checks the mathematics; the library itself is checked by tests/ against the tables of the
-tools/gen_*_reference.py generators.
+tools/gen_*_reference.py generators; tools/check_math_references.py checks that the files,
+functions and test cases docs/math.md names exist.
 """
 
 import math
-import os
 import random
-import re
 import sys
 
 from mpmath import (mp, mpf, mpc, sqrt, sin, cos, tan, atan, atan2, asin, atanh, pi, quad, diff, floor,
@@ -520,44 +517,7 @@ def print_reference_values():
     report('Reference values (§10)')
 
 
-def check_references():
-    """Every path, symbol and test case named in the "Implemented in" / "Tested by" paragraphs of
-    docs/math.md exists: paths as files, symbols as words of the file named before them, test
-    cases as quoted names in the test file named before them."""
-    root = os.path.join(os.path.dirname(os.path.abspath(__file__)), '..')
-    text = open(os.path.join(root, 'docs', 'math.md'), encoding='utf-8').read()
-    missing = []
-    for path in sorted(set(re.findall(r'`((?:include|tests|tools|docs)/[\w/.]+\.(?:hpp|cpp|py|md))`', text))):
-        if not os.path.isfile(os.path.join(root, path)):
-            missing.append(f'file {path}')
-    path_re = re.compile(r'`((?:include|tests)/[\w/.]+\.(?:hpp|cpp))`')  # what the names after it belong to
-    for para in re.findall(r'\*\*(?:Implemented in|Tested by)\*\*.*?(?:\n\n|\Z)', text, re.S):
-        para = ' '.join(para.split())
-        pieces = path_re.split(para)  # [text, path, text, path, text, ...]
-        for i in range(1, len(pieces), 2):
-            path, body = pieces[i], pieces[i + 1]
-            full = os.path.join(root, path)
-            if not os.path.isfile(full):
-                continue
-            source = open(full, encoding='utf-8').read()
-            if path.startswith('tests/'):
-                for name in re.findall(r'"([^"]+)"', body):
-                    if '"' + name + '"' not in source:
-                        missing.append(f'test case "{name}" in {path}')
-            else:
-                for sym in re.findall(r'`([A-Za-z_][A-Za-z0-9_:]*)`', body):
-                    word = sym.split('::')[-1]
-                    if not re.search(r'\b' + re.escape(word) + r'\b', source):
-                        missing.append(f'{sym} in {path}')
-    for m in missing:
-        print('  missing:', m)
-    print(f"references in docs/math.md: {'all found' if not missing else str(len(missing)) + ' missing'}")
-    return not missing
-
-
 if __name__ == '__main__':
-    if '--references' in sys.argv[1:]:
-        sys.exit(0 if check_references() else 1)
     check_ellipse_forms()
     check_projection()
     check_elliptic()
