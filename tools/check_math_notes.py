@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Numerical check of the formulas written in docs/math.md, at 40 digits with mpmath.
 
-    python3 tools/check_math_notes.py          # ~30 s on one core; exit status 1 on a failure
+    python3 tools/check_math_notes.py          # under a minute on one core; exit status 1 on a failure
 
 Each check compares a formula of docs/math.md with an independent evaluation: quadrature of its
 definition, a geometric construction, ray/shape membership, mpmath's own elliptic integrals, or
