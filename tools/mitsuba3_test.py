@@ -162,12 +162,6 @@ def check_unbiased(plugin_dir):
     return ok
 
 
-def rel_mse(img, ref):
-    """Mean over pixels of (I - R)^2 / (R^2 + 0.01 mean(R)^2) on the RGB average (as the demo)."""
-    i, r = img.mean(axis=2), ref.mean(axis=2)
-    return float((((i - r) ** 2) / (r ** 2 + 0.01 * r.mean() ** 2)).mean())
-
-
 def check_relmse(plugin_dir):
     """relMSE at 16 spp (`stratified`) of each apse sampler <= 0.3x Mitsuba's own light, on the
     ground scene (one-sided light, `direct`), against Mitsuba's own light at 4096 spp (so the
@@ -175,6 +169,7 @@ def check_relmse(plugin_dir):
     which moves the ratio towards 1, against the test)."""
     import numpy as np
     mi, scenes = load(plugin_dir)
+    from compare import rel_mse
     w, h = 64, 48
     kw = dict(integrator="direct", twosided=False, hide_emitters=True)
     ref = np.array(mi.render(mi.load_dict(scenes.scene_dict("plane", "mitsuba", w, h, 1024, seed=7, **kw))))

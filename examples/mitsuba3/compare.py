@@ -32,6 +32,7 @@ LABELS = {"mitsuba": "Mitsuba area", "area": "apse_disk area", "radial": "radial
 
 
 def rel_mse(img, ref):
+    """Mean over pixels of (I - R)^2 / (R^2 + 0.01 mean(R)^2) on the RGB average (as the demo)."""
     i, r = img.mean(axis=2), ref.mean(axis=2)
     return float((((i - r) ** 2) / (r ** 2 + 0.01 * r.mean() ** 2)).mean())
 
