@@ -104,13 +104,17 @@ def main():
             progress("%-7s %-20s %4d spp (equal time): %6.3f s, relMSE %.3e" % (name, LABELS[light], spp, t,
                                                                               rows[light]["time_e"]))
 
-        # pictures: reference, then every light; top row equal samples, bottom row equal time
-        exposure = 0.3 / max(float(ref.mean()), 1e-6)
-        blank = np.zeros_like(ref)
-        top = np.concatenate([ref] + [rows[l]["spp_img"] for l in lights], axis=1)
-        bottom = np.concatenate([blank] + [rows[l]["time_img"] for l in lights], axis=1)
-        mi.util.write_bitmap(os.path.join(a.out, "%s_comparison.png" % name),
-                             np.clip(exposure * np.concatenate([top, bottom], axis=0), 0, 1))
+        # pictures: reference, then every light; top row equal samples, bottom row equal time.
+        # Grey scale (every colour in the scenes is grey), exposed so that the reference's 99th
+        # percentile is white.
+        grey = lambda img: img.mean(axis=2, keepdims=True)
+        exposure = 1.0 / max(float(np.quantile(grey(ref), 0.99)), 1e-6)
+        top = np.concatenate([grey(ref)] + [grey(rows[l]["spp_img"]) for l in lights], axis=1)
+        bottom = np.concatenate([np.zeros_like(grey(ref))] + [grey(rows[l]["time_img"]) for l in lights], axis=1)
+        picture = np.clip(exposure * np.concatenate([top, bottom], axis=0), 0, 1).astype(np.float32)
+        mi.Bitmap(picture, mi.Bitmap.PixelFormat.Y).convert(
+            mi.Bitmap.PixelFormat.Y, mi.Struct.Type.UInt8, srgb_gamma=True).write(
+            os.path.join(a.out, "%s_comparison.png" % name))
 
         base = rows["mitsuba"]
         eff0 = 1.0 / (base["e"] * base["t"])
