@@ -15,8 +15,9 @@ then runs one check inside the venv:
   relmse   : at 16 spp of the `stratified` sampler, every apse sampler's relMSE against a
              high-spp reference is <= 0.3x that of Mitsuba's own light on the ground scene.
 
-Exit codes: 0 pass, 1 fail, 77 skipped (a CPU the wheels cannot run on: the message names the
-missing instructions; only that is a skip, anything else that goes wrong is a failure).
+Exit codes: 0 pass, 1 fail, 77 skipped (a CPU the wheels cannot run on: the message, also written
+to DIR/skipped.txt for tools/test.sh to show, names the missing instructions; only that is a skip,
+anything else that goes wrong is a failure).
 """
 import argparse
 import contextlib
@@ -76,9 +77,14 @@ def setup(d):
         if r.returncode != 0:
             if CPU_MARK in r.stdout:
                 line = [l for l in r.stdout.splitlines() if CPU_MARK in l or "needs" in l]
-                log("SKIPPED (mitsuba3): " + " ".join(l.strip() for l in line))
+                reason = "SKIPPED (mitsuba3 tests): " + " ".join(l.strip() for l in line)
+                log(reason)
+                with open(os.path.join(d, "skipped.txt"), "w") as f:  # ctest hides skipped tests' output
+                    f.write(reason + "\n")
                 sys.exit(SKIP)
             sys.exit("mitsuba3: configuring the plugin failed:\n" + r.stdout)
+        with contextlib.suppress(FileNotFoundError):
+            os.remove(os.path.join(d, "skipped.txt"))
         r = run(["cmake", "--build", bdir])
         if r.returncode != 0:
             sys.exit("mitsuba3: building the plugin failed:\n" + r.stdout)

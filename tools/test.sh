@@ -41,6 +41,7 @@ run_build() {  # run_build <name> <cmake args...>
 mkdir -p build
 start=$(date +%s)
 run_build release -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_COMPILER=g++ -DAPSE_TEST_MITSUBA=ON
+cat build/release/mitsuba3/skipped.txt 2>/dev/null || true  # why the Mitsuba 3 tests were skipped
 run_build sanitize -DCMAKE_BUILD_TYPE=Debug -DCMAKE_CXX_COMPILER=g++ \
   "-DCMAKE_CXX_FLAGS=-fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer" \
   -DAPSE_TEST_CONSUMERS=OFF -DAPSE_TEST_CUDA=OFF -DAPSE_BUILD_BENCHMARKS=OFF
