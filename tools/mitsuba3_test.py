@@ -136,8 +136,8 @@ def check_unbiased(plugin_dir):
     silhouettes does not swamp the light-sampling noise. With s the standard deviations of the
     per-seed image means, the tolerance is Z * sqrt(s_apse^2/K + s_ref^2/K_REF): the standard
     error of the difference, estimated from the renders themselves. Z = 5: with 15 degrees of
-    freedom a Student-t exceeds 5 with probability 1.6e-4, so the 30 comparisons below fail by
-    chance with probability < 0.5 % -- and never intermittently, since the seeds are fixed and
+    freedom a Student-t exceeds 5 with probability 1.6e-4, so the 35 comparisons below fail by
+    chance with probability < 0.6 % -- and never intermittently, since the seeds are fixed and
     Mitsuba's scalar renders are deterministic. The tolerances come out at 0.5-2.5 % of the image
     means (printed as "rel"): a pdf_direction that is not the density sampled from, or a wrong
     MIS weight, biases the mean by more than that."""
@@ -145,13 +145,15 @@ def check_unbiased(plugin_dir):
     mi, scenes = load(plugin_dir)
     K, K_REF, Z = 16, 64, 5.0
     ok = True
-    # (scene, integrator, two-sided, standalone): the standalone light is placed by
-    # center/normal/radius (its samples are flagged delta: no MIS), the others attached to the disk
-    cases = (("plane", "direct", False, False), ("plane", "path", True, False),
-             ("spheres", "path", False, False), ("spheres", "direct", True, False),
-             ("medium", "volpath", False, False), ("plane", "path", False, True))
-    for name, integrator, twosided, standalone in cases:
-        kw = dict(integrator=integrator, twosided=twosided, hide_emitters=True)
+    # (scene, integrator, two-sided, standalone, aspect): the standalone light is placed by
+    # center/normal/radius (its samples are flagged delta: no MIS), the others attached to the
+    # disk; aspect 0.4 squeezes the disk into an ellipse (sampled through project_ellipse)
+    cases = (("plane", "direct", False, False, 1.0), ("plane", "path", True, False, 1.0),
+             ("spheres", "path", False, False, 1.0), ("spheres", "direct", True, False, 1.0),
+             ("medium", "volpath", False, False, 1.0), ("plane", "path", False, True, 1.0),
+             ("plane", "path", False, False, 0.4))
+    for name, integrator, twosided, standalone, aspect in cases:
+        kw = dict(integrator=integrator, twosided=twosided, hide_emitters=True, aspect=aspect)
         ref_scene = mi.load_dict(scenes.scene_dict(name, "mitsuba", 32, 24, 16, **kw))
         ref = image_means(mi, ref_scene, 16, range(1000, 1000 + K_REF))
         for light in ("area",) + scenes.APSE_SAMPLERS:
@@ -162,7 +164,8 @@ def check_unbiased(plugin_dir):
             good = abs(diff) <= tol
             ok &= bool(good)
             log("unbiased %-7s %-7s %-13s %-19s mean %.6f ref %.6f diff %+.2e tol %.2e (rel %.2f %%, "
-                "|diff| = %.1f sigma) %s" % (name, integrator, ("2-sided" if twosided else "1-sided") + ("/alone" if standalone else ""), light,
+                "|diff| = %.1f sigma) %s" % (name, integrator, ("2-sided" if twosided else "1-sided") + ("/alone" if standalone else "")
+                                             + ("/ellipse" if aspect != 1.0 else ""), light,
                                              m.mean(), ref.mean(), diff, tol, 100 * tol / ref.mean(),
                                              Z * abs(diff) / tol, "ok" if good else "FAIL"))
     return ok

@@ -7,7 +7,8 @@
 //     'emitter': {'type': 'apse_disk', 'radiance': ..., 'sampler': 'ld_radial'}}. The disk is then
 //     visible to camera and BSDF rays, which call eval() and pdf_direction() (MIS). A to_world
 //     with unequal or non-orthogonal axes makes the disk an ellipse: it is sampled as one
-//     (project_ellipse) instead of as a disk.
+//     (project_ellipse) instead of as a disk. The geometry is read when the shape attaches the
+//     emitter; a later change of the disk's to_world (mi.traverse) is not followed.
 //   * standalone: {'type': 'apse_disk', 'center': [..], 'normal': [..], 'radius': r, ...}. No
 //     ray can hit such a light (like Mitsuba's point and spot lights), so its direction samples
 //     are flagged `delta`: integrators then weigh them 1 instead of applying MIS with BSDF
@@ -289,10 +290,10 @@ public:
         static const char *names[] = { "area", "radial", "ld_radial", "parallel", "tabulated_ld_radial" };
         std::ostringstream oss;
         oss << "ApseDiskLight[sampler = " << names[(int) m_sampler] << ", twosided = " << m_twosided
-            << ", center = " << m_center << ", normal = " << m_normal
-            << (m_geom.radius > 0.f ? ", radius = " : ", ellipse") ;
-        if (m_geom.radius > 0.f) oss << m_geom.radius;
-        oss << ", " << (m_standalone ? "standalone" : "attached to a disk") << "]";
+            << ", center = " << m_center << ", normal = " << m_normal << ", ";
+        if (m_geom.radius > 0.f) oss << "radius = " << m_geom.radius;
+        else oss << "ellipse with semi-axes " << m_u << ", " << m_v;
+        oss << (m_standalone ? ", standalone]" : ", attached to a disk shape]");
         return oss.str();
     }
 

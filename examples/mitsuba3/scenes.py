@@ -25,7 +25,7 @@ LIGHTS = ("mitsuba", "area") + APSE_SAMPLERS
 T = mi.ScalarTransform4f
 
 
-def _disks(center, normal, radius, radiance, light, twosided, standalone=False):
+def _disks(center, normal, radius, radiance, light, twosided, standalone=False, aspect=1.0):
     """{key: disk shape or emitter} of the disk light; `light` is "mitsuba" or an apse_disk
     sampler name. standalone=True: a black disk shape without emitter (for the same occlusion)
     plus a standalone apse_disk emitter (center/normal/radius) in its place."""
@@ -38,10 +38,12 @@ def _disks(center, normal, radius, radiance, light, twosided, standalone=False):
     n = mi.ScalarVector3f(normal)
     # look_at points the disk's +z (its normal) along n; any up vector not parallel to n
     up = [0, 1, 0] if abs(n[1]) < 0.9 * math.sqrt(n[0] ** 2 + n[1] ** 2 + n[2] ** 2) else [1, 0, 0]
-    to_world = T().look_at(origin=c, target=c + n, up=up) @ T().scale(radius)
+    to_world = T().look_at(origin=c, target=c + n, up=up) @ T().scale([radius, aspect * radius, radius])
     disk = {"type": "disk", "to_world": to_world, "emitter": emitter,
             "bsdf": {"type": "diffuse", "reflectance": {"type": "rgb", "value": 0.0}}}
     if standalone:
+        if aspect != 1.0:
+            raise ValueError("a standalone apse_disk light is a disk (aspect 1)")
         del disk["emitter"]
         return {"light": disk, "light_emitter": dict(emitter, center=c, normal=n, radius=float(radius))}
     if light != "mitsuba" or not twosided:
@@ -68,21 +70,22 @@ def _ground():
 
 
 def scene_dict(name, light, width=128, height=96, spp=16, sampler="stratified", seed=0,
-               integrator=None, twosided=True, hide_emitters=False, standalone=False):
+               integrator=None, twosided=True, hide_emitters=False, standalone=False, aspect=1.0):
     """The Mitsuba scene dict of scene `name` lit by `light` (see module comment), rendered at
     width x height with `spp` samples per pixel of the given Mitsuba sampler. `integrator`
     overrides the scene's own (e.g. "direct"); twosided=False makes the light one-sided (emitting
     along its normal); hide_emitters=True renders directly visible lights black (they still
     occlude), so that image errors measure light sampling rather than the anti-aliasing of the
     light's bright silhouette, which is the same for every sampler; standalone=True places an
-    apse_disk light by center/normal/radius instead of attaching it to the disk (see _disks)."""
+    apse_disk light by center/normal/radius instead of attaching it to the disk (see _disks);
+    aspect != 1 squeezes the disk into an ellipse (semi-axes radius and aspect * radius)."""
     diffuse = {"type": "diffuse", "reflectance": {"type": "rgb", "value": 0.8}}
     if name == "plane":
         d = {"type": "scene",
              "integrator": _integrator(integrator or "path", 3),
              "sensor": _camera([0.3, 3.2, 5.5], [0.0, 0.2, 0.0], 50, width, height, spp, sampler, seed),
              "ground": _ground(),
-             **_disks([0.0, 1.05, 0.0], [1.0, 0.0, 0.35], 1.0, 6.0, light, twosided, standalone)}
+             **_disks([0.0, 1.05, 0.0], [1.0, 0.0, 0.35], 1.0, 6.0, light, twosided, standalone, aspect)}
     elif name == "medium":
         d = {"type": "scene",
              "integrator": _integrator(integrator or "volpath", 4),
@@ -90,7 +93,7 @@ def scene_dict(name, light, width=128, height=96, spp=16, sampler="stratified", 
              "sensor": _camera([0.0, 0.6, 5.0], [0.0, 0.0, 0.0], 45, width, height, spp, sampler, seed),
              "box": {"type": "cube", "to_world": T().scale(3.0), "bsdf": {"type": "null"},
                      "interior": {"type": "ref", "id": "fog"}},
-             **_disks([0.0, 0.0, 0.0], [1.0, 0.25, 0.5], 1.0, 12.0, light, twosided, standalone)}
+             **_disks([0.0, 0.0, 0.0], [1.0, 0.25, 0.5], 1.0, 12.0, light, twosided, standalone, aspect)}
         for key in ("light", "light_back"):  # the light sits inside the medium on both sides
             if key in d:
                 d[key]["interior"] = {"type": "ref", "id": "fog"}
@@ -100,7 +103,7 @@ def scene_dict(name, light, width=128, height=96, spp=16, sampler="stratified", 
              "integrator": _integrator(integrator or "path", 3),
              "sensor": _camera([18.0, 8.0, 14.0], [1.0, 1.0, -1.0], 50, width, height, spp, sampler, seed),
              "ground": _ground(),
-             **_disks([1.0, 3.0, 4.0], [0.0, -1.0, -1.0], 3.0, 1.5, light, twosided, standalone)}
+             **_disks([1.0, 3.0, 4.0], [0.0, -1.0, -1.0], 3.0, 1.5, light, twosided, standalone, aspect)}
         for i, c in enumerate(([-4.0, 2.0, -0.5], [1.0, 2.0, -3.0], [6.0, 2.0, -0.5])):
             d["sphere%d" % i] = {"type": "sphere", "center": c, "radius": 2.0, "bsdf": diffuse}
     else:
