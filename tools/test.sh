@@ -2,7 +2,8 @@
 # Builds and runs apse's whole test suite (the README's second Quick-start command; .ci/run runs
 # exactly this). Installs missing Debian packages first. Builds, each into build/<name>:
 #   release : g++, Release, all tests + consumer tests (find_package / add_subdirectory /
-#             FetchContent) + the nvcc device-compile test + benchmark smoke runs
+#             FetchContent) + the nvcc device-compile test + benchmark smoke runs + the Mitsuba 3
+#             plugin tests (venv with the pinned wheels in build/release/mitsuba3)
 #   sanitize: g++, Debug, AddressSanitizer + UndefinedBehaviorSanitizer
 #   clang   : clang++, Release, plus the libFuzzer targets run for a few seconds each
 # Prints "N passed, N failed" over all builds at the end; exits non-zero on any failure.
@@ -10,6 +11,8 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 . tools/deps.sh
 apse_install_deps "${APSE_BASE_PACKAGES[@]}" clang libclang-rt-14-dev libboost-math-dev
+# the Mitsuba 3 tests (release build) make a venv: Debian's python3 needs python3-venv for that
+python3 -c 'import venv, ensurepip' 2>/dev/null || apse_install_deps python3 python3-venv
 
 jobs=${APSE_JOBS:-2}
 passed=0
@@ -37,7 +40,8 @@ run_build() {  # run_build <name> <cmake args...>
 
 mkdir -p build
 start=$(date +%s)
-run_build release -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_COMPILER=g++
+run_build release -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_COMPILER=g++ -DAPSE_TEST_MITSUBA=ON
+cat build/release/mitsuba3/skipped.txt 2>/dev/null || true  # why the Mitsuba 3 tests were skipped
 run_build sanitize -DCMAKE_BUILD_TYPE=Debug -DCMAKE_CXX_COMPILER=g++ \
   "-DCMAKE_CXX_FLAGS=-fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer" \
   -DAPSE_TEST_CONSUMERS=OFF -DAPSE_TEST_CUDA=OFF -DAPSE_BUILD_BENCHMARKS=OFF
