@@ -282,14 +282,15 @@ public:
         // (cos tau, sin tau) = (cos lambda, kappa sin lambda)/n
         const detail::SinCosValues<T> sc = detail::sin_cos_quarter_turn(min_of((T(lo) + s) * inv_bins_, T(1)));
         // n = |(px, py)| and n C(tau) = sqrt(cos^2 alpha px^2 + cos^2 beta py^2): one paired square
-        // root, one division
+        // root, one paired division
         const T px = sc.c, py = kappa_ * sc.s, px2 = px * px, py2 = py * py;
         T n, nc;
         detail::sqrt2(px2 + py2, areas_.ca2 * px2 + areas_.cb2 * py2, n, nc);
-        const T inv_n = T(1) / n;
+        T inv_n, inv_1pc;  // 1/n and 1/(1 + C) = n/(n + n C), paired
+        detail::div2(T(1), n, n, n + nc, inv_n, inv_1pc);
         const T ct = px * inv_n, st = py * inv_n, c = nc * inv_n;
         pdf = density(df, ct, st, c);
-        return detail::radial_direction(areas_, fold.quadrant, ct, st, c, u2);  // as RadialMap
+        return detail::radial_direction(areas_, fold.quadrant, ct, st, c, inv_1pc, u2);  // as RadialMap
     }
 
     /// Building block shared with TabulatedLdRadialMap (detail/ld_composition.hpp): (u1, u2) of
