@@ -1,9 +1,15 @@
-// apse's sampler benchmark (issue 5): every disk sampler, per fresh shading point — set-up
-// (projection + map, or the baseline's own set-up) + 1 sample, and set-up + 16 samples — in
-// float and double, over the same 1024 seeded disk configurations and the same points of the
-// square (support/disk_configs.hpp). DiskAreaSampler (uniform by area) is the reference: compare
-// ratios to it measured in the same run, never absolute times. Timing goals live here, never in
+// apse's sampler benchmark: every disk sampler, per fresh shading point — set-up (projection +
+// map, or the baseline's own set-up) + 1 sample, and set-up + 16 samples — in float and double,
+// over the same 1024 seeded disk configurations and the same points of the square
+// (support/disk_configs.hpp). The reference is lean area sampling (DiskAreaSampler built from the
+// light's stored DiskFrame, as a renderer keeps it: per shading point only c − o); "area_frame_
+// per_point" is the same sampler building the frame at every shading point. Compare ratios to
+// the reference measured in the same run, never absolute times. Timing goals live here, never in
 // tests.
+//
+// Cost breakdown (tools/bench_table.py's second table): <sampler>/<type>/0 is the set-up alone
+// (every field of the map kept observable), "projection" is project_disk alone and
+// "projection_solid_angle" project_disk + solid_angle; per sample = (set-up + 16 − set-up + 1)/15.
 //
 // Names: <sampler>/<float|double>/<samples>. Counters (means per sample):
 //   accepted   — fraction of samples with pdf > 0 (Gamito's acceptance; 1 for the maps);
@@ -11,7 +17,8 @@
 //                     steps (TabulatedMap, TabulatedLdRadialMap), from sample(u, iterations).
 // The JSON context records the compiler and CPU; tools/bench_table.py makes the README's table:
 //   bench_samplers --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
-//                  --benchmark_min_time=0.4 --benchmark_format=json > samplers.json   (~2 min)
+//                  --benchmark_min_time=0.2 --benchmark_enable_random_interleaving=true
+//                  --benchmark_format=json > samplers.json
 //   python3 tools/bench_table.py samplers.json
 #include "support/disk_configs.hpp"
 
@@ -49,10 +56,34 @@ const apse::TabulationTable& table() {
 }
 
 // Sampler factories: make(disk, table view) builds the sampler for one shading point.
-struct Area {
+struct Area {  // the reference: the light's frame stored with the light (DiskConfig::frame)
     static constexpr const char* name = "area";
     template <class T> static auto make(const DiskConfig<T>& d, const apse::TabulationView&) {
+        return apse::DiskAreaSampler<T>(d.o, d.frame);
+    }
+};
+struct AreaFramePerPoint {  // the same sampler, its frame rebuilt at every shading point
+    static constexpr const char* name = "area_frame_per_point";
+    template <class T> static auto make(const DiskConfig<T>& d, const apse::TabulationView&) {
         return apse::DiskAreaSampler<T>(d.o, d.c, d.n, d.r);
+    }
+};
+// Parts of the set-up (cost breakdown only; set-up runs, no samples).
+struct Projection {
+    static constexpr const char* name = "projection";
+    template <class T> static auto make(const DiskConfig<T>& d, const apse::TabulationView&) {
+        return apse::project_disk(d.o, d.c, d.n, d.r);
+    }
+};
+template <class T> struct EllipseAndSolidAngle {
+    apse::SphericalEllipse<T> ellipse;
+    T solid_angle;
+};
+struct ProjectionSolidAngle {
+    static constexpr const char* name = "projection_solid_angle";
+    template <class T> static auto make(const DiskConfig<T>& d, const apse::TabulationView&) {
+        const apse::SphericalEllipse<T> e = apse::project_disk(d.o, d.c, d.n, d.r);
+        return EllipseAndSolidAngle<T>{e, e.solid_angle()};
     }
 };
 struct Rectangle {  // the disk's circumscribed square, sampled without rejection
@@ -112,6 +143,19 @@ template <class S, class U, class = void> struct counts_iterations : std::false_
 template <class S, class U>
 struct counts_iterations<S, U, std::void_t<sample_with_iterations<S, U>>> : std::true_type {};
 
+/// The set-up alone for one fresh shading point per benchmark iteration, every field of the
+/// result kept observable (cost breakdown).
+template <class Factory, class T> void bm_setup(benchmark::State& state) {
+    const DiskConfigs<T>& s = apse_bench::disk_configs<T>();
+    const apse::TabulationView view = table().view();
+    std::size_t i = 0;
+    for (auto _ : state) {
+        const auto& disk = s.disks[i++ & (DiskConfigs<T>::disk_count - 1)];
+        auto sampler = Factory::make(disk, view);
+        benchmark::DoNotOptimize(sampler);
+    }
+}
+
 /// One fresh shading point per benchmark iteration: build the sampler, draw `Samples` samples.
 template <class Factory, class T, int Samples> void bm_sampler(benchmark::State& state) {
     const DiskConfigs<T>& s = apse_bench::disk_configs<T>();
@@ -156,6 +200,12 @@ template <class Factory> void register_sampler() {
     add("float", 16, bm_sampler<Factory, float, 16>);
 }
 
+/// The set-up alone (cost breakdown): <name>/<type>/0.
+template <class Factory> void register_setup() {
+    benchmark::RegisterBenchmark((std::string(Factory::name) + "/double/0").c_str(), bm_setup<Factory, double>);
+    benchmark::RegisterBenchmark((std::string(Factory::name) + "/float/0").c_str(), bm_setup<Factory, float>);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -168,6 +218,7 @@ int main(int argc, char** argv) {
     (void)apse_bench::disk_configs<double>();
 
     register_sampler<Area>();  // the reference
+    register_sampler<AreaFramePerPoint>();
     register_sampler<GamitoSingleShot>();
     register_sampler<GamitoRetry8>();
     register_sampler<Rectangle>();
@@ -176,6 +227,14 @@ int main(int argc, char** argv) {
     register_sampler<Parallel>();
     register_sampler<Tabulated>();
     register_sampler<TabulatedLdRadial>();
+    // cost breakdown: the parts of the set-up
+    register_setup<Projection>();
+    register_setup<ProjectionSolidAngle>();
+    register_setup<Radial>();
+    register_setup<LdRadial>();
+    register_setup<Parallel>();
+    register_setup<Tabulated>();
+    register_setup<TabulatedLdRadial>();
     benchmark::RunSpecifiedBenchmarks();
     benchmark::Shutdown();
     return 0;

@@ -71,7 +71,7 @@ static bool projection_area_ok() {
     const E ed = apse::project_ellipsoid(o, V(T(0), T(0), T(-2)), u, v, V(T(0), T(0), T(0.25)));
     const E ft = E::from_tangents(d.x, d.y, d.z, T(0.5), T(0.25));
     const E fa = E::from_arcs(d.x, d.y, d.z, T(0.5), T(0.25));
-    const apse::DiskAreaSampler<T> area(o, c, n, T(1));
+    const apse::DiskAreaSampler<T> area(o, apse::DiskFrame<T>::make(c, n, T(1)));
     const glm::vec<2, T> uv(T(0.3), T(0.6));
     const auto smp = area.sample(uv);
     const auto pc = apse::detail::concentric_to_disk(uv);

@@ -104,6 +104,107 @@ TEMPLATE_TEST_CASE("concentric map is area-preserving and continuous", "[area][c
     }
 }
 
+TEMPLATE_TEST_CASE("concentric map, signed form: the same point, angle in [-pi/4, 3pi/4]", "[area][concentric]", float,
+                   double) {
+    using T = TestType;
+    // Both forms compute the same ratio (B/A or A/B) with one rounding; the angles differ by a
+    // multiple of pi/2 added in T, so the points agree to a few ulps of the unit radius (16 eps
+    // allows for the cos/sin of an angle up to 2 pi rounded in T).
+    const T tol = T(16) * apse::epsilon<T>();
+    const int n = 64;
+    for (int i = 0; i <= n; ++i) {
+        for (int j = 0; j <= n; ++j) {
+            const vec2<T> u(T(i) / T(n), T(j) / T(n));
+            const auto p = apse::detail::concentric_to_disk(u);
+            const auto q = apse::detail::concentric_to_disk_signed(u);
+            CHECK(std::fabs(q.radius) == p.radius);  // the same |A| or |B|, exactly
+            CHECK(q.angle >= -apse::pi_v<T> / T(4));
+            CHECK(q.angle <= T(0.75) * apse::pi_v<T>);
+            const vec2<T> a = disk_point(p), b(q.radius * std::cos(q.angle), q.radius * std::sin(q.angle));
+            CHECK(std::fabs(a.x - b.x) <= tol);
+            CHECK(std::fabs(a.y - b.y) <= tol);
+        }
+    }
+    const auto c = apse::detail::concentric_to_disk_signed(vec2<T>(T(0.5), T(0.5)));
+    CHECK(c.radius == T(0));
+    const auto q = apse::detail::concentric_to_disk_signed(vec2<T>(T(-2), std::numeric_limits<T>::quiet_NaN()));
+    CHECK(apse::is_finite(q.radius));  // clamped, NaN -> 0
+    CHECK(apse::is_finite(q.angle));
+}
+
+TEMPLATE_TEST_CASE("DiskAreaSampler: a stored DiskFrame gives the same sampler as the per-point frame", "[area]", float,
+                   double) {
+    using T = TestType;
+    std::mt19937_64 rng(7);
+    std::uniform_real_distribution<double> u(0, 1);
+    for (int light = 0; light < 10; ++light) {
+        const vec3<T> c(T(u(rng) * 2 - 1), T(u(rng) * 2 - 1), T(u(rng) * 2 - 1));
+        const vec3<T> n = T(0.5 + 3 * u(rng)) * vec3<T>(T(u(rng) - 0.5), T(u(rng) - 0.5), T(u(rng) - 0.5));
+        const T r = T(0.2 + u(rng));
+        const apse::DiskFrame<T> frame = apse::DiskFrame<T>::make(c, n, r);
+        REQUIRE(frame.valid());
+        // an orthonormal right-handed frame around the unit normal (4 eps: a few roundings of
+        // a normalisation and a cross product)
+        const T tol = T(4) * apse::epsilon<T>();
+        CHECK(std::fabs(glm::dot(frame.e1, frame.e1) - T(1)) <= tol);
+        CHECK(std::fabs(glm::dot(frame.e2, frame.e2) - T(1)) <= tol);
+        CHECK(std::fabs(glm::dot(frame.n, frame.n) - T(1)) <= tol);
+        CHECK(std::fabs(glm::dot(frame.e1, frame.n)) <= tol);
+        CHECK(std::fabs(glm::dot(frame.e2, frame.n)) <= tol);
+        CHECK(std::fabs(glm::dot(frame.e1, frame.e2)) <= tol);
+        CHECK(glm::dot(glm::cross(frame.e1, frame.e2), frame.n) > T(0.99));
+        // one frame, many shading points: bit-identical to building the frame at each point
+        // (both constructors run the same code on the same values)
+        for (int point = 0; point < 20; ++point) {
+            const vec3<T> o(T(u(rng) * 6 - 3), T(u(rng) * 6 - 3), T(u(rng) * 6 - 3));
+            const apse::DiskAreaSampler<T> stored(o, frame), fresh(o, c, n, r);
+            REQUIRE(stored.empty() == fresh.empty());
+            for (int k = 0; k < 8; ++k) {
+                const vec2<T> uu(T(u(rng)), T(u(rng)));
+                const auto a = stored.sample(uu), b = fresh.sample(uu);
+                CHECK(a.pdf == b.pdf);
+                CHECK(a.direction == b.direction);
+                CHECK(stored.pdf(a.direction) == fresh.pdf(a.direction));
+            }
+        }
+    }
+    // invalid frames: every sampler built from them is empty
+    const T nan = std::numeric_limits<T>::quiet_NaN(), inf = std::numeric_limits<T>::infinity();
+    const vec3<T> c(0), n(0, 0, 1), o(T(0.2), T(0.1), T(1));
+    const apse::DiskFrame<T> bad[] = {
+        apse::DiskFrame<T>::make(c, n, T(0)),        apse::DiskFrame<T>::make(c, n, T(-1)),
+        apse::DiskFrame<T>::make(c, n, nan),         apse::DiskFrame<T>::make(c, n, inf),
+        apse::DiskFrame<T>::make(c, vec3<T>(0), T(1)), apse::DiskFrame<T>::make(vec3<T>(nan, 0, 0), n, T(1)),
+        apse::DiskFrame<T>::make(c, n, std::numeric_limits<T>::denorm_min()),  // 1/r overflows
+    };
+    for (const auto& f : bad) {
+        CHECK_FALSE(f.valid());
+        const apse::DiskAreaSampler<T> s(o, f);
+        CHECK(s.empty());
+        CHECK(s.sample(vec2<T>(T(0.3), T(0.7))).pdf == T(0));
+    }
+}
+
+TEMPLATE_TEST_CASE("DiskAreaSampler: grazing and far samples give pdf 0 or a finite pdf, never NaN", "[area][robustness]",
+                   float, double) {
+    using T = TestType;
+    // o just off the disk's plane, far away (the samples graze the disk), and o at 1e12 radii
+    // (len^3 / r^2 is large but finite in double; in float it overflows and is reported as 0)
+    const vec3<T> c(0), n(0, 0, 1);
+    const apse::DiskFrame<T> frame = apse::DiskFrame<T>::make(c, n, T(1));
+    for (const vec3<T>& o : {vec3<T>(T(1e3), T(0), T(1e-30)), vec3<T>(T(1e12), T(1e12), T(1)),
+                             vec3<T>(T(0.5), T(0.25), T(1e-30))}) {
+        const apse::DiskAreaSampler<T> s(o, frame);
+        REQUIRE_FALSE(s.empty());
+        for (int i = 0; i <= 16; ++i) {
+            const auto smp = s.sample(vec2<T>(T(i) / T(16), T(0.3)));
+            CHECK(apse::is_finite(smp.pdf));
+            CHECK(smp.pdf >= T(0));
+            CHECK(std::fabs(glm::length(smp.direction) - T(1)) <= T(8) * apse::epsilon<T>());
+        }
+    }
+}
+
 TEMPLATE_TEST_CASE("DiskAreaSampler: samples on the disk, pdf consistent, inverse", "[area]", float, double) {
     using T = TestType;
     std::mt19937_64 rng(2);

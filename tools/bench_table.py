@@ -11,12 +11,15 @@ benchmark names:
     python3 tools/bench_table.py elliptic.json          (or: ... | python3 tools/bench_table.py)
 
 * bench_samplers (names <sampler>/<float|double>/<samples>): README's "Speed" table — one row per
-  sampler, the ratio of its median time to area sampling's (DiskAreaSampler, same run) for
-  set-up + 1 and set-up + 16 samples in double and float, the median ns in parentheses, and the
-  mean iterations (or table-walk steps) and acceptance per sample.
+  sampler, the ratio of its median time to lean area sampling's (DiskAreaSampler from the light's
+  stored DiskFrame, same run) for set-up + 1 and set-up + 16 samples in double and float, the
+  median ns in parentheses, and the mean iterations (or table-walk steps) and acceptance per
+  sample; then the cost breakdown per map (projection, solid angle, map set-up, per sample) from
+  the set-up-only runs (<sampler>/<type>/0, "projection", "projection_solid_angle").
 
     bench_samplers --benchmark_repetitions=5 --benchmark_report_aggregates_only=true \\
-                   --benchmark_min_time=0.4 --benchmark_format=json > samplers.json
+                   --benchmark_min_time=0.2 --benchmark_enable_random_interleaving=true \\
+                   --benchmark_format=json > samplers.json
     python3 tools/bench_table.py samplers.json
 
 Uses the "median" aggregates when repetitions were run, the plain runs otherwise. The header
@@ -48,7 +51,8 @@ NAME = re.compile(r'^(apsedbl|apse|std|boostnp|boost)_(\w+?)<(float|double)>$')
 
 # bench_samplers: benchmark sampler name -> row title, in table order (area is the reference)
 SAMPLERS = [
-    ('area', '`DiskAreaSampler` (reference)'),
+    ('area', '`DiskAreaSampler`, frame stored per light (reference)'),
+    ('area_frame_per_point', '`DiskAreaSampler`, frame built per shading point'),
     ('gamito_single_shot', '`GamitoSingleShot`'),
     ('gamito_retry8', '`GamitoRetry` (N = 8)'),
     ('rectangle', '`SphericalRectangle` (bounding square)'),
@@ -58,6 +62,11 @@ SAMPLERS = [
     ('tabulated', '`TabulatedMap`'),
     ('tabulated_ld_radial', '`TabulatedLdRadialMap`'),
 ]
+# set-up parts (cost breakdown only)
+PARTS = [('projection', 'project_disk'), ('projection_solid_angle', 'project_disk + solid_angle')]
+# maps in the cost breakdown, and whether their set-up computes the solid angle
+BREAKDOWN = [('radial', True), ('ld_radial', True), ('parallel', True), ('tabulated', False),
+             ('tabulated_ld_radial', False)]
 SAMPLER_NAME = re.compile(r'^(\w+)/(float|double)/(\d+)$')
 
 
@@ -102,10 +111,10 @@ def samplers_table(data):
     print('| sampler | ' + ' | '.join('%s, set-up + %d' % c for c in cols) +
           ' | iterations / sample (double, float) | accepted (double, float) |')
     print('|---|' + '---:|' * (len(cols) + 2))
-    known = [k for k, _ in SAMPLERS]
+    known = [k for k, _ in SAMPLERS] + [k for k, _ in PARTS]
     rows = SAMPLERS + [(k, '`%s`' % k) for k in sorted({key[0] for key in res}) if k not in known]
     for key, title in rows:
-        if not any(k[0] == key for k in res):
+        if not any(k[0] == key and k[2] > 0 for k in res):
             continue
         cells = [title]
         for ty, n in cols:
@@ -134,6 +143,38 @@ def samplers_table(data):
           'DiskAreaSampler in the same run (> 1: slower than area sampling); iterations = '
           'inversion iterations (exact maps) or table-walk steps (tabulated) per sample, from the '
           'set-up + 16 runs; accepted = fraction of samples with pdf > 0.')
+    breakdown_table(res)
+
+
+def breakdown_table(res):
+    """Cost breakdown per map from the set-up-only runs (ns; medians of the same run)."""
+    def t(key, ty, n):
+        b = res.get((key, ty, n))
+        return None if b is None else ns(b)
+    if t('projection', 'double', 0) is None:
+        return
+    print()
+    print('| map | type | projection | solid angle | map set-up (without projection and solid angle) '
+          '| per sample | set-up + 1 (measured) | set-up + 1 / area |')
+    print('|---|---|---:|---:|---:|---:|---:|---:|')
+    for key, has_omega in BREAKDOWN:
+        title = dict(SAMPLERS).get(key, key)
+        for ty in ('double', 'float'):
+            proj, proj_om = t('projection', ty, 0), t('projection_solid_angle', ty, 0)
+            setup, one, sixteen, area = t(key, ty, 0), t(key, ty, 1), t(key, ty, 16), t('area', ty, 1)
+            if None in (proj, proj_om, setup, one, sixteen):
+                continue
+            omega = proj_om - proj if has_omega else 0.0
+            cells = [title, ty, '%.0f' % proj, ('%.0f' % omega) if has_omega else '—',
+                     '%.0f' % (setup - proj - omega), '%.1f' % ((sixteen - one) / 15), '%.0f' % one,
+                     ('%.1f×' % (one / area)) if area else '—']
+            print('| ' + ' | '.join(cells) + ' |')
+    print()
+    print('ns, medians of the same run. projection = project_disk alone (the whole ellipse kept); '
+          'solid angle = (project_disk + solid_angle) − project_disk (only the exact maps compute '
+          'it); map set-up = set-up alone (every field of the map kept) − the two before; per sample '
+          '= (set-up + 16 − set-up + 1)/15. The parts are differences of medians, so they are '
+          'accurate to a few ns.')
 
 
 def load(data):

@@ -1,9 +1,12 @@
 // The seeded disk configurations shared by apse's sampler benchmarks (bench_samplers.cpp).
 // 1024 unit disks: centres uniform in [-2, 2]³, normals uniform on the sphere, shading points
 // 0.1–1000 radii from the centre (log-uniform) in a direction uniform on the sphere (nudged off
-// the disk's plane); plus 4096 points of the unit square. splitmix64 with a fixed seed, computed
+// the disk's plane), each with the DiskFrame a renderer stores with the light (built here,
+// outside any timing); plus 4096 points of the unit square. splitmix64 with a fixed seed, computed
 // in double and rounded once, so float and double see the same configurations and points.
 #pragma once
+
+#include <apse/baselines/area.hpp>
 
 #include <glm/geometric.hpp>
 #include <glm/vec2.hpp>
@@ -22,6 +25,7 @@ template <class T> struct DiskConfig {
     T r;                    ///< radius (1)
     glm::vec<3, T> half_x;  ///< half edges of the circumscribed square (unit; scale by r), edge_y
     glm::vec<3, T> half_y;  ///< along the in-plane direction from o's foot point to the centre
+    apse::DiskFrame<T> frame;  ///< the light's frame for area sampling, built once per light
 };
 
 template <class T> struct DiskConfigs {
@@ -56,7 +60,8 @@ template <class T> struct DiskConfigs {
                                          : glm::normalize(glm::cross(n, glm::dvec3(0.6, 0.8, 0)));
             const glm::dvec3 xd = glm::cross(yd, n);
             disks.push_back({glm::vec<3, T>(o), glm::vec<3, T>(c), glm::vec<3, T>(n), T(1),
-                             glm::vec<3, T>(xd), glm::vec<3, T>(yd)});
+                             glm::vec<3, T>(xd), glm::vec<3, T>(yd),
+                             apse::DiskFrame<T>::make(glm::vec<3, T>(c), glm::vec<3, T>(n), T(1))});
         }
         for (std::size_t i = 0; i < u_count; ++i) u.emplace_back(T(next()), T(next()));
     }

@@ -66,7 +66,7 @@ template <class T> APSE_FUNC void sin_cos_of_atan2(T ta, T tb, SinCos<T>& a, Sin
 ///   their tangents (the gnomonic semi-axes, the primary representation: accurate from 1e-150 to
 ///   the cap 2^55 in double, 2^26 in float) with sines, cosines and 1 − cos computed once, without
 ///   cancellation, from the two tangents. The arcs themselves are `alpha()` and `beta()` (one atan
-///   per call: of the maps only the parallel and tabulated ones need them, once, at set-up).
+///   per call: of the maps only the parallel one needs them, once, at set-up).
 /// * `m`, `one_minus_m`: the parameter m = k^2 = (tan^2 alpha − tan^2 beta)/(1 + tan^2 alpha) of the
 ///   ellipse's elliptic integrals (MATH.md §3) and its complement 1 − m = cos^2 alpha / cos^2 beta,
 ///   both computed without cancellation.

@@ -78,6 +78,11 @@ __global__ void projection_kernel(const T* in, T* out, int n) {
     const apse::DiskAreaSampler<T> area(o, c, nrm, T(1));
     const auto smp = area.sample(uv);
     s += smp.pdf + area.pdf(smp.direction) + area.invert(smp.direction).x + area.normal().z + (area.empty() ? T(1) : T(0));
+    const apse::DiskFrame<T> frame = apse::DiskFrame<T>::make(c, nrm, T(1));
+    const apse::DiskAreaSampler<T> area_f(o, frame);
+    s += area_f.sample(uv).pdf + (frame.valid() ? T(1) : T(0));
+    const auto pcs = apse::detail::concentric_to_disk_signed(uv);
+    s += pcs.radius + pcs.angle;
     const auto pc = apse::detail::concentric_to_disk(uv);
     s += pc.radius + pc.angle() + apse::detail::concentric_from_disk(pc.radius, pc.turns).y;
     out[i] = s;

@@ -4,9 +4,12 @@
 
 /// @file baselines/area.hpp
 /// Uniform-by-area sampling of a disk light — the classic baseline and the cost floor every
-/// apse benchmark ratio is measured against. Directions are drawn from points uniform on the
-/// disk (Shirley–Chiu concentric map, MATH.md §4), and the density is converted to solid angle:
-/// pdf = dist^2 / (|cos theta_l| pi r^2). Unbiased, but its pdf varies over the disk (the
+/// apse benchmark ratio is measured against, written as a renderer writes it: the disk's frame
+/// (`DiskFrame`) is built once per light and stored with it; per shading point only c − o and
+/// two tests; per sample one concentric point (signed polar form, no angle wrapping), one
+/// sin/cos pair, one square root and one division. Directions are drawn from points uniform on
+/// the disk (Shirley–Chiu concentric map, docs/math.md §4), and the density is converted to solid
+/// angle: pdf = dist^2 / (|cos theta_l| pi r^2). Unbiased, but its pdf varies over the disk (the
 /// spherical-ellipse maps are uniform in solid angle).
 
 #include <cmath>
@@ -20,53 +23,86 @@
 
 namespace apse {
 
-/// Uniform-by-area sampler of the disk {p : (p − center)·n = 0, |p − center| <= radius} seen
-/// from the shading point `o`, with the pdf in **solid angle**. Two-sided, like project_disk
-/// (|cos theta_l|): its pdf integrates to the disk's solid angle at o, and E[1/pdf] = Omega.
-/// The same degenerate-input rules as project_disk: radius <= 0, a zero or non-finite normal,
-/// NaN/Inf coordinates, or `o` in the disk's plane (Omega = 0) make the sampler *empty*:
-/// `sample` returns pdf 0 ("no sample") and `pdf` returns 0 everywhere. `normal` need not be
-/// unit length (it is normalised). Cost: one concentric map, one normalisation, one division.
+/// The per-light part of uniform-by-area disk sampling: the disk {p : (p − center)·n = 0,
+/// |p − center| <= radius} with its unit normal and an in-plane orthonormal frame. Build it once
+/// per light (`make`) and keep it with the light; DiskAreaSampler then needs only the shading
+/// point. Invalid (`valid()` false: every sampler built from it is empty) for radius <= 0 or
+/// non-finite, a radius whose reciprocal overflows, a zero or non-finite normal, or a non-finite
+/// centre. `normal` need not be unit length (it is normalised). Trivially copyable.
+template <class T> struct DiskFrame {
+    using vec3 = glm::vec<3, T>;
+
+    vec3 center;   ///< the disk's centre
+    vec3 n;        ///< unit normal ((0, 0, 1) when invalid)
+    vec3 e1, e2;   ///< unit in-plane axes, (e1, e2, n) right-handed
+    T radius;      ///< r (0 when invalid)
+    T inv_radius;  ///< 1/r (0 when invalid)
+
+    /// The frame of the disk (center, normal, radius); see the struct comment for invalid input.
+    static APSE_FUNC DiskFrame make(const vec3& center, const vec3& normal, T radius) noexcept {
+        DiskFrame f{center, vec3(T(0), T(0), T(1)), vec3(T(1), T(0), T(0)), vec3(T(0), T(1), T(0)), T(0), T(0)};
+        const vec3 nn = detail::robust_normalize(normal);
+        const T inv_r = T(1) / radius;
+        if (!(radius > T(0)) || !is_finite(radius) || !is_finite(inv_r) || !(glm::dot(nn, nn) > T(0)) ||
+            !detail::finite3(center))
+            return f;
+        f.n = nn;
+        f.e1 = detail::any_perpendicular(nn);
+        f.e2 = glm::cross(nn, f.e1);
+        f.radius = radius;
+        f.inv_radius = inv_r;
+        return f;
+    }
+
+    /// True if samplers built from this frame can sample (see the struct comment).
+    APSE_FUNC bool valid() const noexcept { return inv_radius > T(0); }
+};
+
+/// Uniform-by-area sampler of a disk seen from the shading point `o`, with the pdf in **solid
+/// angle**. Two-sided, like project_disk (|cos theta_l|): its pdf integrates to the disk's solid
+/// angle at o, and E[1/pdf] = Omega. Empty (`sample` returns pdf 0, "no sample"; `pdf` returns 0
+/// everywhere) for an invalid DiskFrame, NaN/Inf coordinates of o or c − o, or `o` in the disk's
+/// plane (Omega = 0) — the same degenerate-input rules as project_disk. Per shading point: c − o
+/// and the tests (from a stored DiskFrame); per sample: one concentric point, one sin/cos, one
+/// square root, one division. Trivially copyable.
 template <class T> class DiskAreaSampler {
 public:
     using vec2 = glm::vec<2, T>;
     using vec3 = glm::vec<3, T>;
 
-    /// Builds the sampler (precomputes the disk's in-plane frame and 1/(pi r^2)).
-    APSE_FUNC DiskAreaSampler(const vec3& o, const vec3& center, const vec3& normal, T radius) noexcept
-        : w_(center - o), e1_(T(1), T(0), T(0)), e2_(T(0), T(1), T(0)), n_(T(0), T(0), T(1)),
-          radius_(radius), pdf_factor_(T(0)) {
-        const vec3 n = detail::robust_normalize(normal);
-        if (!(radius > T(0)) || !is_finite(radius) || !(glm::dot(n, n) > T(0)) || !detail::finite3(o) ||
-            !detail::finite3(w_))
-            return;
-        if (!(glm::dot(w_, n) != T(0))) return;  // o in the disk's plane: Omega = 0
-        n_ = n;
-        e1_ = detail::any_perpendicular(n);
-        e2_ = glm::cross(n, e1_);
-        pdf_factor_ = T(1) / pi_v<T>;  // pdf = (dist / r)^2 / (|cos| pi)
+    /// The sampler at `o` for the light's stored frame (the renderer's per-shading-point call).
+    APSE_FUNC DiskAreaSampler(const vec3& o, const DiskFrame<T>& frame) noexcept
+        : w_(frame.center - o), frame_(frame) {
+        if (!frame.valid() || !detail::finite3(o) || !detail::finite3(w_) || !(glm::dot(w_, frame.n) != T(0)))
+            frame_.inv_radius = T(0);  // empty (o in the disk's plane: Omega = 0)
     }
 
-    /// True if the sampler cannot produce samples (degenerate input, see the class comment).
-    APSE_FUNC bool empty() const noexcept { return !(pdf_factor_ > T(0)); }
+    /// Convenience: builds the frame at every call (DiskFrame::make), then as above — a normalised
+    /// normal, a perpendicular and a cross product more per shading point than storing the frame.
+    APSE_FUNC DiskAreaSampler(const vec3& o, const vec3& center, const vec3& normal, T radius) noexcept
+        : DiskAreaSampler(o, DiskFrame<T>::make(center, normal, radius)) {}
 
-    /// Direction towards the disk point ρ (cos θ, sin θ) of the concentric map of u ∈ [0,1]^2
-    /// (coordinates clamped into it) and its solid-angle pdf dist^2 / (|cos theta_l| pi r^2).
-    /// Empty sampler: pdf 0 and the direction is the (unit) normal. A pdf that would overflow
-    /// (a sample exactly grazing, cos theta_l underflowing) is reported as 0.
+    /// True if the sampler cannot produce samples (degenerate input, see the class comment).
+    APSE_FUNC bool empty() const noexcept { return !(frame_.inv_radius > T(0)); }
+
+    /// Direction towards the disk point rho (cos theta, sin theta) of the concentric map of
+    /// u ∈ [0,1]^2 (coordinates clamped into it) and its solid-angle pdf
+    /// dist^2 / (|cos theta_l| pi r^2). Empty sampler: pdf 0 and the direction is the (unit)
+    /// normal. A pdf that would overflow (a sample exactly grazing, cos theta_l underflowing) is
+    /// reported as 0.
     APSE_FUNC DirectionSample<T> sample(const vec2& u) const noexcept {
-        if (empty()) return {n_, T(0)};
-        const detail::ConcentricPolar<T> pt = detail::concentric_to_disk(u);
-        const T ang = pt.angle();
-        const T rr = radius_ * pt.radius;
-        const vec3 d = w_ + (rr * std::cos(ang)) * e1_ + (rr * std::sin(ang)) * e2_;
-        const T len = std::sqrt(glm::dot(d, d));
-        const vec3 dir = d / len;
-        const T cos_l = std::fabs(glm::dot(dir, n_));
-        const T ratio = len / radius_;
-        T pdf = ratio * ratio * pdf_factor_ / cos_l;
-        if (!is_finite(pdf)) pdf = T(0);
-        return {dir, pdf};
+        if (empty()) return {frame_.n, T(0)};
+        const detail::ConcentricSigned<T> pt = detail::concentric_to_disk_signed(u);
+        const T rr = frame_.radius * pt.radius;
+        const vec3 d = w_ + (rr * std::cos(pt.angle)) * frame_.e1 + (rr * std::sin(pt.angle)) * frame_.e2;
+        const T len2 = glm::dot(d, d), len = std::sqrt(len2);
+        const T dn = std::fabs(glm::dot(d, frame_.n));
+        // one division: q = 1/(len dn); direction d/len = d (dn q); pdf = len^3/(dn pi r^2)
+        const T q = T(1) / (len * dn);
+        const T ratio = len * frame_.inv_radius;
+        const T pdf = (ratio * ratio) * (len2 * q) * (T(1) / pi_v<T>);
+        if (!is_finite(pdf)) return {detail::robust_normalize(d), T(0)};  // grazing, or overflow: no sample
+        return {d * (dn * q), pdf};
     }
 
     /// Solid-angle density of `direction` (any non-zero length; it is normalised): the
@@ -75,13 +111,14 @@ public:
     APSE_FUNC T pdf(const vec3& direction) const noexcept {
         if (empty()) return T(0);
         const vec3 dir = detail::robust_normalize(direction);
-        const T cos_l = glm::dot(dir, n_);
-        const T t = glm::dot(w_, n_) / cos_l;  // distance along the ray to the plane
+        const T cos_l = glm::dot(dir, frame_.n);
+        const T t = glm::dot(w_, frame_.n) / cos_l;  // distance along the ray to the plane
         if (!(t > T(0)) || !is_finite(t)) return T(0);
         const vec3 p = t * dir - w_;  // hit point relative to the centre
-        if (!(glm::dot(p, p) <= radius_ * radius_)) return T(0);
-        const T ratio = t / radius_;
-        const T pdf = ratio * ratio * pdf_factor_ / std::fabs(cos_l);
+        const T ratio = t * frame_.inv_radius;
+        const vec3 pr = p * frame_.inv_radius;
+        if (!(glm::dot(pr, pr) <= T(1))) return T(0);
+        const T pdf = ratio * ratio * (T(1) / pi_v<T>) / std::fabs(cos_l);
         return is_finite(pdf) ? pdf : T(0);
     }
 
@@ -93,27 +130,23 @@ public:
         const vec2 centre(T(0.5), T(0.5));
         if (empty()) return centre;
         const vec3 dir = detail::robust_normalize(direction);
-        const T t = glm::dot(w_, n_) / glm::dot(dir, n_);
+        const T t = glm::dot(w_, frame_.n) / glm::dot(dir, frame_.n);
         if (!(t > T(0)) || !is_finite(t)) return centre;
         const vec3 p = t * dir - w_;
-        const T x = glm::dot(p, e1_), y = glm::dot(p, e2_);
-        const T rho = std::sqrt(x * x + y * y) / radius_;
+        const T x = glm::dot(p, frame_.e1) * frame_.inv_radius, y = glm::dot(p, frame_.e2) * frame_.inv_radius;
+        const T rho = std::sqrt(x * x + y * y);
         if (!(rho > T(0))) return centre;
         T turns = std::atan2(y, x) * (T(1) / two_pi_v<T>);
         if (turns < T(0)) turns += T(1);
         return detail::concentric_from_disk(rho, turns);
     }
 
-    /// The disk's unit normal as used (normalised; (0, 0, 1) for an empty sampler).
-    APSE_FUNC const vec3& normal() const noexcept { return n_; }
+    /// The disk's unit normal as used (normalised; (0, 0, 1) for an invalid frame).
+    APSE_FUNC const vec3& normal() const noexcept { return frame_.n; }
 
 private:
-    vec3 w_;   ///< center − o
-    vec3 e1_;  ///< in-plane frame
-    vec3 e2_;
-    vec3 n_;   ///< unit normal
-    T radius_;
-    T pdf_factor_;  ///< 1/pi, or 0 for an empty sampler
+    vec3 w_;              ///< center − o
+    DiskFrame<T> frame_;  ///< the light's frame (inv_radius 0: empty sampler)
 };
 
 }  // namespace apse

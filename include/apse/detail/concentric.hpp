@@ -6,7 +6,7 @@
 /// Shirley–Chiu concentric map of the unit square onto the unit disk and its inverse, in polar
 /// form (MATH.md §4). It is area-preserving (up to the factor pi) and maps concentric squares
 /// to concentric circles, so it keeps stratification. Used by uniform-by-area disk sampling
-/// (point = radius (cos angle, sin angle)) and by the LD-radial map (azimuthal area fraction
+/// (signed form: point = radius (cos angle, sin angle), angle in [−pi/4, 3pi/4]) and by the LD-radial map (azimuthal area fraction
 /// `turns` = angle / (2 pi), radial fraction radius^2).
 
 #include <cmath>
@@ -48,6 +48,26 @@ template <class T> APSE_FUNC ConcentricPolar<T> concentric_to_disk(const glm::ve
     }
     if (!(turns < T(1))) turns = T(0);  // 1 − tiny rounded up: the same point
     return {radius, turns};
+}
+
+/// A point of the unit disk in signed polar form: radius (cos angle, sin angle) with `radius`
+/// in [−1, 1] and `angle` in [−pi/4, 3pi/4] (the form a renderer writes: no angle wrapping).
+template <class T> struct ConcentricSigned {
+    T radius;  ///< in [−1, 1]
+    T angle;   ///< radians, in [−pi/4, 3pi/4]
+};
+
+/// The concentric map's point of u (the same point as concentric_to_disk(u)), in signed polar
+/// form: A = 2u1 − 1, B = 2u2 − 1; if |A| > |B|: (A, (pi/4)(B/A)), else (B, pi/2 − (pi/4)(A/B));
+/// the square's centre → (0, 0). One division. Domain [0, 1]^2; coordinates outside are clamped
+/// into it (NaN → 0).
+template <class T> APSE_FUNC ConcentricSigned<T> concentric_to_disk_signed(const glm::vec<2, T>& u) noexcept {
+    const T a = T(2) * clamp(u.x, T(0), T(1)) - T(1);
+    const T b = T(2) * clamp(u.y, T(0), T(1)) - T(1);
+    const T quarter_pi = T(0.25) * pi_v<T>;
+    if (std::fabs(a) > std::fabs(b)) return {a, quarter_pi * (b / a)};
+    if (b == T(0)) return {T(0), T(0)};
+    return {b, half_pi_v<T> - quarter_pi * (a / b)};
 }
 
 /// Inverse of concentric_to_disk: the square point of the disk point (radius, turns) (radius in

@@ -25,15 +25,25 @@ namespace detail {
 /// anomaly (cos tau, sin tau) = (ct, st) and cos theta_max = c there (k.c_max(ct, st)), reflected
 /// into quadrant q (place_in_quadrant). sin theta_max = r = |(a cos tau, b sin tau)|;
 /// 1 − cos theta = u2 (1 − C), 1 − C = r^2/(1 + C); cos theta = (1 − u2) + u2 C (no cancellation
-/// near the horizon of large ellipses). u2 = 0 gives the centre, u2 = 1 the boundary point.
+/// near the horizon of large ellipses); the in-plane part (ax, by) sin theta / r with
+/// sin theta / r = sqrt(u2 (2 − v)/(1 + C)), v = 1 − cos theta. u2 = 0 gives the centre, u2 = 1
+/// the boundary point. `inv_1pc` = 1/(1 + C) (the caller may have it from a paired division).
+template <class T>
+APSE_FUNC glm::vec<3, T> radial_direction(const EllipseAreas<T>& k, int q, T ct, T st, T c, T inv_1pc,
+                                          T u2) noexcept {
+    const T ax = k.a * ct, by = k.b * st;
+    const T r2 = ax * ax + by * by;
+    // v = 1 − cos theta = u2 r^2/(1 + C); sin theta / r = sqrt(v (2 − v))/r = sqrt(u2 (2 − v)/(1 + C)):
+    // no division here and one square root (r itself is never needed).
+    const T v = u2 * (r2 * inv_1pc);
+    const T scale = std::sqrt(u2 * (T(2) - v) * inv_1pc);
+    return place_in_quadrant(q, ax * scale, by * scale, (T(1) - u2) + u2 * c);
+}
+
+/// radial_direction with 1/(1 + C) computed here (one division).
 template <class T>
 APSE_FUNC glm::vec<3, T> radial_direction(const EllipseAreas<T>& k, int q, T ct, T st, T c, T u2) noexcept {
-    const T ax = k.a * ct, by = k.b * st;
-    const T r2 = ax * ax + by * by, r = std::sqrt(r2);
-    const T v = u2 * (r2 / (T(1) + c));
-    const T sin_theta = std::sqrt(v * (T(2) - v));
-    const T scale = r > T(0) ? sin_theta / r : T(0);
-    return place_in_quadrant(q, ax * scale, by * scale, (T(1) - u2) + u2 * c);
+    return radial_direction(k, q, ct, st, c, T(1) / (T(1) + c), u2);
 }
 
 /// The two terms of the inverse of radial_direction's u2: u2 = one_minus_cos / one_minus_c.

@@ -47,6 +47,8 @@
 #include "../detail/cumulative_area.hpp"
 #include "../detail/glm.hpp"
 #include "../detail/ld_composition.hpp"
+#include "../detail/pairs.hpp"
+#include "../detail/polynomial_trig.hpp"
 #include "../detail/quadrant.hpp"
 #include "../detail/radial_polar.hpp"
 
@@ -147,8 +149,9 @@ using TabulationTable = TabulationTableN<128, 17, 9>;
 /// Tabulated radial map (MATH.md §4 + §6, unbiased; file comment): u1 picks the quadrant and the
 /// Lambert anomaly from the blended table CDF, u2 the polar angle exactly as RadialMap. Not
 /// area-preserving (nearly: pdf Omega within the table's error of 1), but the reported pdf is
-/// exactly its density. Per shading point: no elliptic integral, no Omega; per sample: a short
-/// table walk (rarely more than the first guess) and one sin/cos. Holds a pointer into the table
+/// exactly its density. Per shading point: no elliptic integral, no Omega, no library call (the
+/// table coordinate beta/alpha by polynomials); per sample: a short table walk (rarely more than
+/// the first guess) and a polynomial sin/cos. Holds a pointer into the table
 /// (the table must outlive the map). Trivially copyable.
 template <class T> class TabulatedMap {
 public:
@@ -163,18 +166,25 @@ public:
         for (int r = 0; r < 4; ++r) { rows_[r] = table.cdf; weights_[r] = T(0); }
         valid_ = !ellipse.empty() && table.cdf != nullptr && table.bins >= 1 && table.alpha_nodes >= 2 &&
                  table.ratio_nodes >= 2 && ellipse.tan_alpha > T(0);
-        kappa_ = std::sqrt((T(1) + areas_.ca) / (T(1) + areas_.cb));
+        T sqrt_ca;  // kappa = sqrt((1 + cos alpha)/(1 + cos beta)) and sqrt(cos alpha), paired
+        detail::sqrt2((T(1) + areas_.ca) / (T(1) + areas_.cb), areas_.ca, kappa_, sqrt_ca);
         kappa2_ = kappa_ * kappa_;
         bin_width_ = half_pi_v<T> / T(bins_ > 0 ? bins_ : 1);
+        inv_bins_ = T(1) / T(bins_ > 0 ? bins_ : 1);
         pdf_scale_ = T(0);
         if (!valid_) return;
         // pdf = (dF N) kappa (1 + C) / (2 pi a b (kappa^2 ct^2 + st^2)): the constant part
-        // kappa/(2 pi a b), divided in two steps so that a b does not underflow and the result
-        // does not overflow for the smallest ellipses (it is ~1/Omega; dF N is ~1).
-        pdf_scale_ = ((kappa_ / two_pi_v<T>) / areas_.a) / areas_.b;
+        // kappa/(2 pi a b) = (kappa/(2 pi)) (1/a) (1/b), multiplied in this order so that it
+        // neither underflows nor overflows for the smallest ellipses (it is ~1/Omega; dF N is ~1).
+        T inv_a, inv_b;
+        detail::div2(T(1), areas_.a, T(1), areas_.b, inv_a, inv_b);
+        pdf_scale_ = ((kappa_ * (T(1) / two_pi_v<T>)) * inv_a) * inv_b;
         if (!is_finite(pdf_scale_) || !(pdf_scale_ > T(0))) { valid_ = false; pdf_scale_ = T(0); return; }
-        const T fx = clamp(T(1) - std::sqrt(areas_.ca), T(0), T(1)) * T(table.alpha_nodes - 1);
-        const T fy = clamp(ellipse.beta() / ellipse.alpha(), T(0), T(1)) * T(table.ratio_nodes - 1);
+        // Table coordinates: x = 1 − sqrt(cos alpha), y = beta/alpha (the latter by polynomials,
+        // within 1e-7: it only chooses the rows blended, and any blend is exact for the sampler).
+        const T fx = clamp(T(1) - sqrt_ca, T(0), T(1)) * T(table.alpha_nodes - 1);
+        const T ratio = detail::arc_ratio(areas_.a, areas_.ca, areas_.b, areas_.cb);
+        const T fy = clamp(ratio, T(0), T(1)) * T(table.ratio_nodes - 1);
         int i = int(fx), j = int(fy);
         if (i > table.alpha_nodes - 2) i = table.alpha_nodes - 2;
         if (j > table.ratio_nodes - 2) j = table.ratio_nodes - 2;
@@ -268,14 +278,19 @@ public:
         }
         const T df = f1 - f0;
         const T s = df > T(0) ? clamp((f - f0) / df, T(0), T(1)) : T(0);
-        const T lambda = (T(lo) + s) * bin_width_;
-        // tan tau = kappa tan lambda; (cos tau, sin tau) = (cos lambda, kappa sin lambda)/n
-        const T cl = max_of(std::cos(lambda), T(0)), sl = max_of(std::sin(lambda), T(0));
-        const T px = cl, py = kappa_ * sl, n = std::sqrt(px * px + py * py);
-        const T ct = px / n, st = py / n;
-        const T c = areas_.c_max(ct, st);
+        // lambda = (lo + s) pi/(2N); tan tau = kappa tan lambda;
+        // (cos tau, sin tau) = (cos lambda, kappa sin lambda)/n
+        const detail::SinCosValues<T> sc = detail::sin_cos_quarter_turn(min_of((T(lo) + s) * inv_bins_, T(1)));
+        // n = |(px, py)| and n C(tau) = sqrt(cos^2 alpha px^2 + cos^2 beta py^2): one paired square
+        // root, one paired division
+        const T px = sc.c, py = kappa_ * sc.s, px2 = px * px, py2 = py * py;
+        T n, nc;
+        detail::sqrt2(px2 + py2, areas_.ca2 * px2 + areas_.cb2 * py2, n, nc);
+        T inv_n, inv_1pc;  // 1/n and 1/(1 + C) = n/(n + n C), paired
+        detail::div2(T(1), n, n, n + nc, inv_n, inv_1pc);
+        const T ct = px * inv_n, st = py * inv_n, c = nc * inv_n;
         pdf = density(df, ct, st, c);
-        return detail::radial_direction(areas_, fold.quadrant, ct, st, c, u2);  // as RadialMap
+        return detail::radial_direction(areas_, fold.quadrant, ct, st, c, inv_1pc, u2);  // as RadialMap
     }
 
     /// Building block shared with TabulatedLdRadialMap (detail/ld_composition.hpp): (u1, u2) of
@@ -336,7 +351,7 @@ private:
     const float* rows_[4];
     T weights_[4];
     int bins_;
-    T kappa_, kappa2_, bin_width_, pdf_scale_;
+    T kappa_, kappa2_, bin_width_, inv_bins_, pdf_scale_;
     bool valid_;
 };
 
