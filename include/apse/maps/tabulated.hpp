@@ -270,9 +270,8 @@ public:
         const T s = df > T(0) ? clamp((f - f0) / df, T(0), T(1)) : T(0);
         const T lambda = (T(lo) + s) * bin_width_;
         // tan tau = kappa tan lambda; (cos tau, sin tau) = (cos lambda, kappa sin lambda)/n
-        const T cl = max_of(std::cos(lambda), T(0)), sl = max_of(std::sin(lambda), T(0));
-        const T px = cl, py = kappa_ * sl, n = std::sqrt(px * px + py * py);
-        const T ct = px / n, st = py / n;
+        T ct, st;
+        detail::lambert_tau(kappa_, max_of(std::cos(lambda), T(0)), max_of(std::sin(lambda), T(0)), ct, st);
         const T c = areas_.c_max(ct, st);
         pdf = density(df, ct, st, c);
         return detail::radial_direction(areas_, fold.quadrant, ct, st, c, u2);  // as RadialMap
@@ -296,6 +295,12 @@ public:
         }
         return vec2(clamp(u1, T(0), T(1)), u2);
     }
+
+    /// The per-ellipse constants of the cumulative areas (building block).
+    APSE_FUNC const detail::EllipseAreas<T>& areas() const noexcept { return areas_; }
+
+    /// kappa = cos(alpha/2)/cos(beta/2), the ratio of the Lambert anomaly (building block).
+    APSE_FUNC T kappa() const noexcept { return kappa_; }
 
 private:
     struct Azimuth {
