@@ -367,6 +367,43 @@ TEST_CASE("cosine-weighted: stratification kept (jittered beats independent)", "
     }
 }
 
+TEMPLATE_TEST_CASE("cosine-weighted DiskLight: the wrapper's density, points on the disk, unbiased", "[cosine]", float,
+                   double) {
+    using T = TestType;
+    using V3 = glm::vec<3, T>;
+    // the disk of kConfigs[2] (straddling the horizon), seen from the origin
+    const Config c = kConfigs[2];
+    const V3 o(T(0)), centre(T(c.h), T(0), T(c.d)), axis(T(0), T(0), T(1)), n = tv<T>(c.normal);
+    for (apse::DiskMap m : {apse::DiskMap::radial, apse::DiskMap::ld_radial, apse::DiskMap::parallel}) {
+        const apse::DiskLight<T> light(o, centre, axis, T(c.ra), m, n);
+        CHECK(light.cosine_weighted());
+        const double ref = projected_solid_angle(c);
+        const glm::dvec3 nd = glm::normalize(c.normal);
+        apse_test::Rng rng(5);
+        const int N = 50000;
+        double sum = 0, sum2 = 0;
+        for (int i = 0; i < N; ++i) {
+            const glm::vec<2, T> u(rng.uniform<T>(), rng.uniform<T>());
+            const apse::DiskLightSample<T> s = light.sample(u);
+            REQUIRE(s.pdf > T(0));
+            // the point is on the disk, along the direction (float: ~1e-6 relative)
+            CHECK(std::fabs(double(s.point.z) - c.d) < (sizeof(T) == 4 ? 1e-5 : 1e-12));
+            CHECK(glm::length(glm::dvec3(o + s.distance * s.direction - s.point)) < (sizeof(T) == 4 ? 1e-5 : 1e-12));
+            CHECK(double(light.pdf(s.direction)) == Approx(double(s.pdf)).epsilon(sizeof(T) == 4 ? 2e-2 : 1e-7));
+            const double f = std::max(glm::dot(nd, glm::dvec3(s.direction)), 0.0) / double(s.pdf);
+            sum += f;
+            sum2 += f * f;
+        }
+        const double mean = sum / N, se = std::sqrt((sum2 / N - mean * mean) / N);
+        INFO("MC " << mean << " reference " << ref << " se " << se);
+        CHECK(std::fabs(mean - ref) < 5 * se + 1e-6 * ref);  // 5 standard errors
+    }
+    // a zero receiver normal: the plain light
+    const apse::DiskLight<T> plain(o, centre, axis, T(c.ra), apse::DiskMap::ld_radial, V3(T(0)));
+    const apse::DiskLight<T> ref(o, centre, axis, T(c.ra), apse::DiskMap::ld_radial);
+    CHECK(plain.sample(glm::vec<2, T>(T(0.3), T(0.6))).pdf == ref.sample(glm::vec<2, T>(T(0.3), T(0.6))).pdf);
+}
+
 TEST_CASE("cosine-weighted: trivially copyable", "[cosine]") {
     STATIC_REQUIRE(std::is_trivially_copyable<apse::CosineWeighted<apse::LdRadialMap<float>>>::value);
     STATIC_REQUIRE(std::is_trivially_copyable<apse::CosineWeighted<apse::TabulatedLdRadialMap<double>>>::value);
