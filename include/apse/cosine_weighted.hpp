@@ -48,6 +48,26 @@ namespace detail {
 /// samples below the horizon).
 template <class T> APSE_FUNC constexpr T cosine_weight_floor() noexcept { return T(0.001); }
 
+/// cos and sin of j pi / (2 M), j = 0..M, as compile-time constants (Taylor series to 1e-17).
+template <int M> struct QuarterTurns {
+    double c[M + 1], s[M + 1];
+    APSE_FUNC constexpr QuarterTurns() noexcept : c(), s() {
+        for (int j = 0; j <= M; ++j) {
+            const double x = 1.5707963267948966 * j / M;
+            double term = 1.0, cs = 0.0, sn = 0.0;
+            for (int t = 0; t < 30; ++t) {  // term = x^t / t!
+                if (t % 4 == 0) cs += term;
+                else if (t % 4 == 1) sn += term;
+                else if (t % 4 == 2) cs -= term;
+                else sn -= term;
+                term *= x / (t + 1);
+            }
+            c[j] = j == M ? 0.0 : cs;
+            s[j] = j == 0 ? 0.0 : sn;
+        }
+    }
+};
+
 /// Uniform weights (the plain map's density).
 template <class T, int Cols, int Rows> APSE_FUNC void fill_uniform_warp(BilinearWarp<T, Cols, Rows>& warp) noexcept {
     for (int i = 0; i <= Cols; ++i)
@@ -68,24 +88,33 @@ APSE_FUNC bool fill_radial_warp(const EllipseAreas<T>& k, T kappa, const glm::ve
                                 BilinearWarp<T, Cols, Rows>& warp) noexcept {
     static_assert(Cols % 4 == 0, "the radial grid folds onto quadrants");
     constexpr int m = Cols / 4;
-    T qct[m + 1], qst[m + 1];  // first-quadrant boundary points at the fractions j/m
+    constexpr QuarterTurns<m> turns{};  // cos, sin of j pi/(2m): compile-time constants
+    // The m + 1 distinct first-quadrant columns (the others are their reflections): the unit
+    // horizontal direction of the boundary point and, per row, 1 − v = cos theta and sin theta.
+    T hx[m + 1], hy[m + 1], cos_t[m + 1][Rows + 1], sin_t[m + 1][Rows + 1];
     for (int j = 0; j <= m; ++j) {
-        const T h = (T(j) / T(m)) * half_pi_v<T>;
-        lambert_tau(kappa, max_of(std::cos(h), T(0)), max_of(std::sin(h), T(0)), qct[j], qst[j]);
+        T ct, st;
+        lambert_tau(kappa, T(turns.c[j]), T(turns.s[j]), ct, st);
+        const T ax = k.a * ct, by = k.b * st;
+        const T r2 = ax * ax + by * by, rr = std::sqrt(r2);
+        hx[j] = rr > T(0) ? ax / rr : T(1);
+        hy[j] = rr > T(0) ? by / rr : T(0);
+        const T wv = r2 / (T(1) + k.c_max(ct, st));  // 1 − C: 1 − cos theta at v2 = 1
+        for (int r = 0; r <= Rows; ++r) {
+            const T v = (T(r) / T(Rows)) * wv;  // 1 − cos theta
+            cos_t[j][r] = T(1) - v;
+            sin_t[j][r] = std::sqrt(max_of(v * (T(2) - v), T(0)));
+        }
     }
     T best = T(0);
     for (int i = 0; i <= Cols; ++i) {
         const int ii = i == Cols ? 0 : i;  // v1 = 1 is the same azimuth as v1 = 0
         const int q = ii / m, r = ii % m;
         const int jf = (q & 1) ? m - r : r;  // odd quadrants are reflected (fold_quadrant)
-        const T ct = qct[jf], st = qst[jf];
-        const glm::vec<3, T> p = place_in_quadrant(q, k.a * ct, k.b * st, T(0));
-        const T r2 = p.x * p.x + p.y * p.y, rr = std::sqrt(r2);
-        const T hor = rr > T(0) ? (n.x * p.x + n.y * p.y) / rr : T(0);
-        const T wv = r2 / (T(1) + k.c_max(ct, st));  // 1 − C: 1 − cos theta at v2 = 1
+        const glm::vec<3, T> h = place_in_quadrant(q, hx[jf], hy[jf], T(0));
+        const T hor = n.x * h.x + n.y * h.y;  // n's component towards the column's azimuth
         for (int j = 0; j <= Rows; ++j) {
-            const T v = (T(j) / T(Rows)) * wv;  // 1 − cos theta
-            const T c = n.z * (T(1) - v) + hor * std::sqrt(max_of(v * (T(2) - v), T(0)));
+            const T c = n.z * cos_t[jf][j] + hor * sin_t[jf][j];
             warp.weight(i, j) = c;
             best = max_of(best, c);
         }

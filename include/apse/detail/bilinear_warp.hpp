@@ -47,6 +47,7 @@ template <class T, int Cols, int Rows> struct BilinearWarp {
     T w[Cols + 1][Rows + 1];  ///< vertex weights (> 0)
     T cdf[Cols + 1];          ///< cdf[i] = integral of B over v1 in [0, i/Cols]
     T col[Cols + 1];          ///< S_i: integral of column i's linear interpolant over v2
+    T inv_total;              ///< 1 / cdf[Cols]
 
     /// Vertex weight at (v1, v2) = (i/Cols, j/Rows).
     APSE_FUNC T& weight(int i, int j) noexcept { return w[i][j]; }
@@ -60,6 +61,7 @@ template <class T, int Cols, int Rows> struct BilinearWarp {
         }
         cdf[0] = T(0);
         for (int i = 0; i < Cols; ++i) cdf[i + 1] = cdf[i] + (col[i] + col[i + 1]) * (T(0.5) / T(Cols));
+        inv_total = T(1) / cdf[Cols];
     }
 
     /// The point of the square for the input u in [0, 1]^2 (uniform → density p), and p there
@@ -78,7 +80,7 @@ template <class T, int Cols, int Rows> struct BilinearWarp {
         int l = 0;
         while (l < Rows - 1 && !(t2 < acc[l + 1])) ++l;
         const T s2 = linear_density_root(c[l], c[l + 1], t2 - acc[l]);
-        density = (c[l] + s2 * (c[l + 1] - c[l])) / cdf[Cols];
+        density = (c[l] + s2 * (c[l + 1] - c[l])) * inv_total;
         return vec2((T(k) + s) / T(Cols), (T(l) + s2) / T(Rows));
     }
 
@@ -88,7 +90,7 @@ template <class T, int Cols, int Rows> struct BilinearWarp {
         T s, s2;
         locate(v.x, Cols, k, s);
         locate(v.y, Rows, l, s2);
-        const T u1 = (cdf[k] + linear_density_mass(col[k], col[k + 1], s) / T(Cols)) / cdf[Cols];
+        const T u1 = (cdf[k] + linear_density_mass(col[k], col[k + 1], s) / T(Cols)) * inv_total;
         T below = T(0), all = T(0);
         T prev = w[k][0] + s * (w[k + 1][0] - w[k][0]);
         for (int j = 0; j < Rows; ++j) {
@@ -109,7 +111,7 @@ template <class T, int Cols, int Rows> struct BilinearWarp {
         locate(v.y, Rows, l, s2);
         const T c0 = w[k][l] + s * (w[k + 1][l] - w[k][l]);
         const T c1 = w[k][l + 1] + s * (w[k + 1][l + 1] - w[k][l + 1]);
-        return (c0 + s2 * (c1 - c0)) / cdf[Cols];
+        return (c0 + s2 * (c1 - c0)) * inv_total;
     }
 
 private:

@@ -135,10 +135,9 @@ public:
         return r.point;
     }
 
-    /// The first guess of solve_quadrant for the fraction f in [0, 1] of the quadrant's area
-    /// (the Lambert-equal-area azimuth tan tau = kappa tan(f pi/2): exact for caps and small
-    /// ellipses, within a few degrees otherwise; one sin/cos, one atan2). Building block of
-    /// CosineWeighted (a cheap approximate image of the square's columns).
+    /// The first guess of solve_quadrant for the fraction f in [0, 1] of the quadrant's area:
+    /// the Lambert-equal-area azimuth tan tau = kappa tan(f pi/2) (exact for caps and small
+    /// ellipses; one sin/cos, one atan2).
     APSE_FUNC detail::RadialPoint<T> guess_quadrant(T f) const noexcept {
         const T h = clamp(f, T(0), T(1)) * half_pi_v<T>;
         T ct, st;
