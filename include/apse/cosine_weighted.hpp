@@ -42,8 +42,8 @@
 namespace apse {
 namespace detail {
 
-/// The weight floor of CosineWeighted, added to every vertex's max(0, cos) (cosines are <= 1):
-/// keeps the warp's density positive where the approximate vertex images say "below the
+/// The weight floor of CosineWeighted, as a fraction of the largest vertex cosine, added to
+/// every vertex's max(0, cos): keeps the warp's density positive where the approximate vertex images say "below the
 /// horizon" but part of a cell is above it (docs/cosine_weighted.md: its effect on variance and
 /// on the fraction of samples below the horizon).
 template <class T> APSE_FUNC constexpr T cosine_weight_floor() noexcept { return T(0.001); }
@@ -106,9 +106,7 @@ APSE_FUNC bool fill_radial_warp(const EllipseAreas<T>& k, T kappa, const glm::ve
             sin_t[j][r] = std::sqrt(max_of(v * (T(2) - v), T(0)));
         }
     }
-    // weights max(0, cos) + floor; the floor is absolute (cosines are <= 1), so one pass does it
-    const T floor = cosine_weight_floor<T>();
-    bool above = false;
+    T best = T(0);
     for (int q = 0; q < 4; ++q)
         for (int r = 0; r < m; ++r) {
             const int i = q * m + r;
@@ -117,12 +115,17 @@ APSE_FUNC bool fill_radial_warp(const EllipseAreas<T>& k, T kappa, const glm::ve
             const T hor = n.x * h.x + n.y * h.y;  // n's component towards the column's azimuth
             for (int j = 0; j <= Rows; ++j) {
                 const T c = n.z * cos_t[jf][j] + hor * sin_t[jf][j];
-                above = above || c > T(0);
-                warp.weight(i, j) = max_of(c, T(0)) + floor;
+                best = max_of(best, c);
+                warp.weight(i, j) = c;
             }
         }
+    if (!(best > T(0))) return false;
+    // weights max(0, cos) + floor
+    const T floor = cosine_weight_floor<T>() * best;
+    for (int i = 0; i < Cols; ++i)
+        for (int j = 0; j <= Rows; ++j) warp.weight(i, j) = max_of(warp.weight(i, j), T(0)) + floor;
     for (int j = 0; j <= Rows; ++j) warp.weight(Cols, j) = warp.weight(0, j);  // v1 = 1 is v1 = 0
-    return above;
+    return true;
 }
 
 /// Fills the warp of ParallelMap's square (v1 = the slice's area fraction, v2 = the position
@@ -152,7 +155,7 @@ APSE_FUNC bool fill_parallel_warp(const ParallelMap<T>& map, const glm::vec<3, T
         }
     }
     if (!(best > T(0))) return false;
-    const T floor = cosine_weight_floor<T>();
+    const T floor = cosine_weight_floor<T>() * best;
     for (int i = 0; i <= Cols; ++i)
         for (int j = 0; j <= Rows; ++j) warp.weight(i, j) = max_of(warp.weight(i, j), T(0)) + floor;
     return true;
