@@ -210,6 +210,15 @@ template <class T> struct CosineTraits<ParallelMap<T>> {
 
 }  // namespace detail
 
+// DiskLight holds a CosineWeighted in a union next to the plain maps and picks the live member at
+// run time; g++ cannot correlate the two and reports -Wmaybe-uninitialized on mode_ in the
+// members' bodies when the union's other member is the live one (a false positive: the branch
+// that reads it is not taken). Silenced for this class only.
+#if defined(__GNUC__) && !defined(__clang__) && !defined(__CUDACC__)
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
+#endif
+
 /// Cosine-weighted sampling of a spherical ellipse (file comment; docs/cosine_weighted.md):
 /// `Map` is RadialMap<T>, LdRadialMap<T>, ParallelMap<T>, TabulatedMap<T> or
 /// TabulatedLdRadialMap<T>; the warp is a piecewise-bilinear density on a Cols × Rows grid of
@@ -234,8 +243,8 @@ public:
     /// horizon (max n·ω <= 0 over the ellipse, an exact test) or an empty map: empty(), every
     /// pdf 0. A zero, NaN or infinite normal: no weighting — the samples, pdf and invert of the
     /// plain map (`weighted()` is then false).
-    APSE_FUNC CosineWeighted(const Map& map, const vec3& normal) noexcept : base_(Traits::base(map)) {
-        mode_ = Mode::empty;
+    APSE_FUNC CosineWeighted(const Map& map, const vec3& normal) noexcept
+        : mode_(Mode::empty), base_(Traits::base(map)) {
         if (!Traits::valid(base_)) return;
         const SphericalEllipse<T>& e = base_.ellipse();
         const T scale = detail::max_abs3(normal);
@@ -316,9 +325,13 @@ public:
 
 private:
     enum class Mode : int { empty, plain, weighted };
+    Mode mode_;
     Base base_;
     detail::BilinearWarp<T, Cols, Rows> warp_;
-    Mode mode_;
 };
+
+#if defined(__GNUC__) && !defined(__clang__) && !defined(__CUDACC__)
+#pragma GCC diagnostic pop
+#endif
 
 }  // namespace apse
