@@ -148,7 +148,7 @@ __global__ void tabulated_kernel(const T* in, T* out, float* table_rows, int n) 
 // CosineWeighted over every map, and DiskLight's cosine-weighted option: a kernel of its own.
 template <class Map> __device__ typename Map::vec3::value_type cosine_calls(const Map& map, typename Map::vec2 u) {
     using T = typename Map::vec3::value_type;
-    const apse::CosineWeighted<Map> c(map, typename Map::vec3(T(0.2), T(0.1), T(1)));
+    const apse::CosineWeighted<Map> c(map, typename Map::vec3(T(0.2), T(0.1), T(-1)));  // facing the light
     const auto d = c.sample(u);
     return d.pdf + c.pdf(d.direction) + c.invert(d.direction).x + T(c.empty() ? 1 : 0) + T(c.weighted() ? 1 : 0) +
            c.ellipse().tan_alpha;
@@ -184,7 +184,7 @@ __global__ void cosine_kernel(const T* in, T* out, float* table_rows, int n) {
     default: s += cosine_calls(apse::TabulatedLdRadialMap<T>(e, view), u); break;
     }
     const apse::DiskMap m = i % 3 == 0 ? apse::DiskMap::radial : (i % 3 == 1 ? apse::DiskMap::ld_radial : apse::DiskMap::parallel);
-    const apse::DiskLight<T> light(V(0), V(a, T(0), T(-1)), V(0, 0, 1), T(1), m, V(T(1), T(0), T(0.5)));
+    const apse::DiskLight<T> light(V(0), V(a, T(0), T(-1)), V(0, 0, 1), T(1), m, V(T(1), T(0), T(-0.5)));
     const auto ls = light.sample(u);
     s += ls.pdf + light.pdf(ls.direction) + light.invert(ls.direction).x + T(light.cosine_weighted() ? 1 : 0);
     out[i] = s;
