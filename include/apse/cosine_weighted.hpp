@@ -223,10 +223,12 @@ template <class T> struct CosineTraits<ParallelMap<T>> {
 /// `Map` is RadialMap<T>, LdRadialMap<T>, ParallelMap<T>, TabulatedMap<T> or
 /// TabulatedLdRadialMap<T>; the warp is a piecewise-bilinear density on a Cols × Rows grid of
 /// the map's square (the defaults are the measured best trade-off between variance and set-up
-/// cost). Set-up: (Cols + 1)(Rows + 1) closed-form vertex cosines (one sqrt each) and
-/// Cols/4 (radial) or Cols/2 (parallel) first-guess boundary points; no solve, no elliptic
-/// integral. Per sample: the warp (two quadratics) and one sample of the map.
-/// Trivially copyable (pass it to kernels by value).
+/// cost; docs/cosine_weighted.md). Set-up: (Cols + 1)(Rows + 1) closed-form vertex cosines
+/// from Cols/4 + 1 distinct first-guess columns ((Cols/4 + 1) Rows square roots; radial maps) or
+/// Cols/2 + 1 guessed slices (parallel); no solve, no elliptic integral. Per sample: the warp
+/// (two quadratics) and one sample of the map. Measured: relMSE of irradiance 13–17× lower than
+/// the plain map at 16 samples near a disk light; set-up + 1 sample ~2.3× the plain tabulated
+/// LD-radial map's. Trivially copyable (pass it to kernels by value).
 template <class Map, int Cols = detail::CosineTraits<Map>::cols, int Rows = detail::CosineTraits<Map>::rows>
 class CosineWeighted {
     using Traits = detail::CosineTraits<Map>;
