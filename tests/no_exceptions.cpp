@@ -103,7 +103,17 @@ static bool tabulated_ok() {
                         T(apse::detail::tabulated_lambda_density(0.5, 0.5, 0.6, 0.9)), with_steps};
     for (T v : values)
         if (!apse::is_finite(v) || !(v >= T(0))) return false;
-    return s.pdf > T(0) && !tab.empty() && !tld.empty();
+    // cosine-weighted over the tabulated map, and DiskLight's cosine option
+    const apse::CosineWeighted<apse::TabulatedLdRadialMap<T>> cw(tld, V(T(0.3), T(0.1), T(-1)));  // facing the light
+    const auto c = cw.sample(u);
+    const apse::DiskLight<T> lit(V(0), V(T(0.5), T(0), T(-1)), V(0, 0, 1), T(1), apse::DiskMap::ld_radial,
+                                 V(T(0.3), T(0.1), T(-1)));
+    const auto ls = lit.sample(u);
+    const T more[] = {c.pdf, cw.pdf(c.direction), cw.invert(c.direction).x, ls.pdf, lit.pdf(ls.direction)};
+    for (T v : more)
+        if (!apse::is_finite(v) || !(v >= T(0))) return false;
+    return s.pdf > T(0) && !tab.empty() && !tld.empty() && c.pdf > T(0) && cw.weighted() && !cw.empty() &&
+           lit.cosine_weighted();
 }
 
 int main() {

@@ -17,8 +17,9 @@ const apse::DiskMap kMaps[] = {apse::DiskMap::radial, apse::DiskMap::ld_radial, 
 // Passed to GPU kernels by value: plain data. It holds only the chosen map (a union).
 static_assert(std::is_trivially_copyable<apse::DiskLight<float>>::value, "DiskLight must be trivially copyable");
 static_assert(std::is_trivially_copyable<apse::DiskLight<double>>::value, "DiskLight must be trivially copyable");
-static_assert(sizeof(apse::DiskLight<double>) < sizeof(apse::LdRadialMap<double>) + sizeof(apse::ParallelMap<double>),
-              "DiskLight holds one map, not both");
+static_assert(sizeof(apse::DiskLight<double>) <
+                  sizeof(apse::CosineWeighted<apse::LdRadialMap<double>>) + sizeof(apse::ParallelMap<double>),
+              "DiskLight holds one sampler, not several");
 }  // namespace
 
 TEMPLATE_TEST_CASE("disk light: point, distance and pdf", "[disk_light]", float, double) {

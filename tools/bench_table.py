@@ -61,6 +61,12 @@ SAMPLERS = [
     ('parallel', '`ParallelMap`'),
     ('tabulated', '`TabulatedMap`'),
     ('tabulated_ld_radial', '`TabulatedLdRadialMap`'),
+    ('cosine_radial', '`CosineWeighted<RadialMap>`'),
+    ('cosine_ld_radial', '`CosineWeighted<LdRadialMap>`'),
+    ('cosine_parallel', '`CosineWeighted<ParallelMap>`'),
+    ('cosine_tabulated', '`CosineWeighted<TabulatedMap>`'),
+    ('cosine_tabulated_ld_radial', '`CosineWeighted<TabulatedLdRadialMap>`'),
+    ('cosine_tabulated_ld_radial_8x2', '`CosineWeighted<TabulatedLdRadialMap, 8, 2>`'),
 ]
 # set-up parts (cost breakdown only)
 PARTS = [('projection', 'project_disk'), ('projection_solid_angle', 'project_disk + solid_angle')]

@@ -4,8 +4,9 @@
 
 /// @file samplers.hpp
 /// The samplers compared, each wrapped in a *factory* that builds the per-shading-point sampler
-/// (the set-up a renderer does once per shading point) and a uniform `LightSample` result:
-/// direction, solid-angle pdf (0 = no sample: skip it), distance to the disk.
+/// (the set-up a renderer does once per shading point) from the shading point, the receiver's
+/// normal (zero in the medium, where there is no surface) and the light, and a uniform
+/// `LightSample` result: direction, solid-angle pdf (0 = no sample: skip it), distance to the disk.
 
 #include <array>
 #include <memory>
@@ -31,7 +32,7 @@ struct LightSample {
     float distance;  ///< to the disk along direction
 };
 
-enum class Kind { area, gamito, radial, ld_radial, parallel, tabulated };
+enum class Kind { area, gamito, radial, ld_radial, parallel, tabulated, cosine };
 
 inline const char* kind_name(Kind k) {
     switch (k) {
@@ -41,13 +42,14 @@ inline const char* kind_name(Kind k) {
     case Kind::ld_radial: return "LD-radial";
     case Kind::parallel: return "parallel";
     case Kind::tabulated: return "tabulated";
+    case Kind::cosine: return "cosine-weighted";
     }
     return "?";
 }
 
 /// The samplers of the comparison, in display order.
 inline std::vector<Kind> all_kinds() {
-    return {Kind::area, Kind::gamito, Kind::radial, Kind::ld_radial, Kind::parallel, Kind::tabulated};
+    return {Kind::area, Kind::gamito, Kind::radial, Kind::ld_radial, Kind::parallel, Kind::tabulated, Kind::cosine};
 }
 
 /// Wraps a sampler with `sample(u) -> DirectionSample<float>` into LightSample (the distance is
@@ -67,19 +69,19 @@ template <class S> Wrapped<S> wrap(const S& s, const vec3& o, const Disk& L) {
     return Wrapped<S>{s, L.center - o, L.normal};
 }
 
-/// Per-kind factories: `(o, disk) -> sampler with sample(u) -> LightSample`.
+/// Per-kind factories: `(o, receiver normal, disk) -> sampler with sample(u) -> LightSample`.
 struct AreaFactory {
-    auto operator()(const vec3& o, const Disk& L) const {
+    auto operator()(const vec3& o, const vec3&, const Disk& L) const {
         return wrap(apse::DiskAreaSampler<float>(o, L.center, L.normal, L.radius), o, L);
     }
 };
 struct GamitoFactory {  // Gamito's single shot (the paper's baseline), unbiased bookkeeping
-    auto operator()(const vec3& o, const Disk& L) const {
+    auto operator()(const vec3& o, const vec3&, const Disk& L) const {
         return wrap(apse::GamitoSingleShot<float>(o, L.center, L.normal, L.radius), o, L);
     }
 };
 template <class Map> struct MapFactory {
-    auto operator()(const vec3& o, const Disk& L) const {
+    auto operator()(const vec3& o, const vec3&, const Disk& L) const {
         return wrap(Map(apse::project_disk(o, L.center, L.normal, L.radius)), o, L);
     }
 };
@@ -91,9 +93,18 @@ struct TabulatedTable {
 };
 struct TabulatedFactory {  // the paper's default: tabulated LD-radial (code `concentrictab`)
     apse::TabulationView view;
-    auto operator()(const vec3& o, const Disk& L) const {
+    auto operator()(const vec3& o, const vec3&, const Disk& L) const {
         return wrap(apse::TabulatedLdRadialMap<float>(apse::project_disk(o, L.center, L.normal, L.radius), view),
                     o, L);
+    }
+};
+/// Cosine-weighted over the tabulated LD-radial map (CosineWeighted): directions drawn ∝ the
+/// receiver's clamped cosine; with a zero normal (the medium) it is the plain tabulated map.
+struct CosineFactory {
+    apse::TabulationView view;
+    auto operator()(const vec3& o, const vec3& n, const Disk& L) const {
+        const apse::TabulatedLdRadialMap<float> map(apse::project_disk(o, L.center, L.normal, L.radius), view);
+        return wrap(apse::CosineWeighted<apse::TabulatedLdRadialMap<float>>(map, n), o, L);
     }
 };
 inline const apse::TabulationView& tabulation_view() {
@@ -111,6 +122,7 @@ template <class F> void with_factory(Kind k, F&& f) {
     case Kind::ld_radial: f(MapFactory<apse::LdRadialMap<float>>{}); break;
     case Kind::parallel: f(MapFactory<apse::ParallelMap<float>>{}); break;
     case Kind::tabulated: f(TabulatedFactory{tabulation_view()}); break;
+    case Kind::cosine: f(CosineFactory{tabulation_view()}); break;
     }
 }
 

@@ -238,7 +238,7 @@ void shade_pixel(const Scene& s, const Factory& make, int x, int y, int w, int h
                 const float t = tc + off;
                 const float pdf_t = D / ((a1 - a0) * (D * D + off * off));
                 const vec3 p = o + t * d;
-                const LightSample ls = make(p, s.light).sample(vec2(u1, u2));
+                const LightSample ls = make(p, vec3(0.0f), s.light).sample(vec2(u1, u2));  // no surface
                 if (ls.pdf > 0.0f) {
                     const float tr = std::exp(-s.sigma_t * (t - t0)) * std::exp(-s.sigma_t * ls.distance);
                     sum += static_cast<double>(s.sigma_s * tr * phase * s.light.Le / (pdf_t * ls.pdf));
@@ -252,7 +252,7 @@ void shade_pixel(const Scene& s, const Factory& make, int x, int y, int w, int h
     vec3 p = o + d, nrm(0.0f, 1.0f, 0.0f);  // (unused when the ray hits nothing)
     const bool hit = hit_surface(s, o, d, p, nrm);
     const vec3 po = s.type == SceneType::plane ? p : p + 1e-3f * nrm;  // plane: exact reference at p
-    const auto sampler = make(po, s.light);  // per shading point set-up, once
+    const auto sampler = make(po, nrm, s.light);  // per shading point set-up, once
     const float f = s.albedo * inv_pi * s.light.Le;
     for (int i = 0; i < n; ++i) {
         if (hit) {

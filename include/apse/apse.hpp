@@ -18,4 +18,5 @@
 #include "maps/ld_radial.hpp"
 #include "maps/parallel.hpp"
 #include "maps/tabulated.hpp"
+#include "cosine_weighted.hpp"
 #include "disk_light.hpp"

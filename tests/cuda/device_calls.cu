@@ -150,6 +150,51 @@ __global__ void tabulated_kernel(const T* in, T* out, float* table_rows, int n) 
     out[i] = s;
 }
 
+// CosineWeighted over every map, and DiskLight's cosine-weighted option: a kernel of its own.
+template <class Map> __device__ typename Map::vec3::value_type cosine_calls(const Map& map, typename Map::vec2 u) {
+    using T = typename Map::vec3::value_type;
+    const apse::CosineWeighted<Map> c(map, typename Map::vec3(T(0.2), T(0.1), T(-1)));  // facing the light
+    const auto d = c.sample(u);
+    return d.pdf + c.pdf(d.direction) + c.invert(d.direction).x + T(c.empty() ? 1 : 0) + T(c.weighted() ? 1 : 0) +
+           c.ellipse().tan_alpha;
+}
+
+template <class T>
+__global__ void cosine_kernel(const T* in, T* out, float* table_rows, int n) {
+    const int i = blockIdx.x * blockDim.x + threadIdx.x;
+    if (i >= n) return;
+    using V = glm::vec<3, T>;
+    const T a = in[i];
+    const apse::TabulationView view{table_rows, 128, 17, 9};
+    const glm::vec<2, T> u(a, T(0.6));
+    const auto e = apse::project_disk(V(0), V(a, T(0), T(-1)), V(0, 0, 1), T(1));
+    T s = T(0);
+    switch (i % 5) {
+    case 0: {
+        const apse::RadialMap<T> m(e);
+        s += cosine_calls(m, u) + m.guess_quadrant(a).ct + m.kappa() + m.areas().a;
+        break;
+    }
+    case 1: s += cosine_calls(apse::LdRadialMap<T>(e), u); break;
+    case 2: {
+        const apse::ParallelMap<T> m(e);
+        s += cosine_calls(m, u) + m.guess_half(a).x_max + m.areas().b;
+        break;
+    }
+    case 3: {
+        const apse::TabulatedMap<T> m(e, view);
+        s += cosine_calls(m, u) + m.kappa() + m.areas().a;
+        break;
+    }
+    default: s += cosine_calls(apse::TabulatedLdRadialMap<T>(e, view), u); break;
+    }
+    const apse::DiskMap m = i % 3 == 0 ? apse::DiskMap::radial : (i % 3 == 1 ? apse::DiskMap::ld_radial : apse::DiskMap::parallel);
+    const apse::DiskLight<T> light(V(0), V(a, T(0), T(-1)), V(0, 0, 1), T(1), m, V(T(1), T(0), T(-0.5)));
+    const auto ls = light.sample(u);
+    s += ls.pdf + light.pdf(ls.direction) + light.invert(ls.direction).x + T(light.cosine_weighted() ? 1 : 0);
+    out[i] = s;
+}
+
 template <class T>
 __global__ void all_public_functions(const T* in, T* out, int n) {
     const int i = blockIdx.x * blockDim.x + threadIdx.x;
@@ -168,7 +213,10 @@ int main() {
     void (*pd)(const double*, double*, int) = projection_kernel<double>;
     void (*tf)(const float*, float*, float*, int) = tabulated_kernel<float>;
     void (*td)(const double*, double*, float*, int) = tabulated_kernel<double>;
+    void (*cf)(const float*, float*, float*, int) = cosine_kernel<float>;
+    void (*cd)(const double*, double*, float*, int) = cosine_kernel<double>;
     std::printf("tabulated kernels compiled: %p %p\n", reinterpret_cast<void*>(tf), reinterpret_cast<void*>(td));
+    std::printf("cosine-weighted kernels compiled: %p %p\n", reinterpret_cast<void*>(cf), reinterpret_cast<void*>(cd));
     std::printf("device kernels compiled: %p %p %p %p %p %p\n", reinterpret_cast<void*>(kf),
                 reinterpret_cast<void*>(kd), reinterpret_cast<void*>(mf), reinterpret_cast<void*>(md),
                 reinterpret_cast<void*>(pf), reinterpret_cast<void*>(pd));

@@ -1,5 +1,6 @@
-// libFuzzer target: arbitrary geometry (shading point, disk centre, normal, radius), map choice
-// and point of the square, in float and double, through disk_light.hpp. Checks what the library
+// libFuzzer target: arbitrary geometry (shading point, disk centre, normal, radius), map choice,
+// an optional receiver normal (cosine-weighted sampling) and point of the square, in float and
+// double, through disk_light.hpp. Checks what the library
 // promises for every input: a finite unit direction, a finite pdf >= 0, and for pdf > 0 a
 // direction inside the disk's spherical ellipse (rounding-aware test), a finite point at a
 // finite positive distance, an inverse inside the square, and finite MIS pdfs. Any violation
@@ -23,7 +24,7 @@ double g_u[2];
 [[noreturn]] void fail(const char* what) {
     std::fprintf(stderr, "fuzz_disk_light: %s\n", what);
     if (g_input)
-        for (int i = 0; i < 10; ++i) std::fprintf(stderr, "  g[%d] = %.17g\n", i, g_input[i]);
+        for (int i = 0; i < 13; ++i) std::fprintf(stderr, "  g[%d] = %.17g\n", i, g_input[i]);
     std::fprintf(stderr, "  u = %.17g %.17g\n", g_u[0], g_u[1]);
     std::abort();
 }
@@ -45,11 +46,13 @@ double value(FuzzedDataProvider& in) {
     }
 }
 
-template <class T> void check(const double* g, apse::DiskMap map, T u1, T u2) {
+template <class T> void check(const double* g, apse::DiskMap map, bool cosine, T u1, T u2) {
     using V = glm::vec<3, T>;
     const V o{T(g[0]), T(g[1]), T(g[2])}, c{T(g[3]), T(g[4]), T(g[5])}, n{T(g[6]), T(g[7]), T(g[8])};
     const T r = T(g[9]);
-    const apse::DiskLight<T> light(o, c, n, r, map);
+    const V receiver{T(g[10]), T(g[11]), T(g[12])};
+    const apse::DiskLight<T> light = cosine ? apse::DiskLight<T>(o, c, n, r, map, receiver)
+                                            : apse::DiskLight<T>(o, c, n, r, map);
     const apse::DiskLightSample<T> s = light.sample(glm::vec<2, T>(u1, u2));
     if (!finite3(s.direction)) fail("non-finite direction");
     if (!apse::is_finite(s.pdf) || !(s.pdf >= T(0))) fail("pdf not finite and >= 0");
@@ -79,17 +82,18 @@ template <class T> void check(const double* g, apse::DiskMap map, T u1, T u2) {
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     FuzzedDataProvider in(data, size);
-    double g[10];
+    double g[13];
     for (double& v : g) v = value(in);
     const apse::DiskMap maps[] = {apse::DiskMap::radial, apse::DiskMap::ld_radial, apse::DiskMap::parallel};
     const apse::DiskMap map = maps[in.ConsumeIntegralInRange<int>(0, 2)];
+    const bool cosine = in.ConsumeBool();
     double u1 = in.ConsumeProbability<double>(), u2 = in.ConsumeProbability<double>();
     if (in.ConsumeBool()) u1 = value(in);  // sometimes out of [0, 1], NaN or infinite
     if (in.ConsumeBool()) u2 = value(in);
     g_input = g;
     g_u[0] = u1;
     g_u[1] = u2;
-    check<float>(g, map, float(u1), float(u2));
-    check<double>(g, map, u1, u2);
+    check<float>(g, map, cosine, float(u1), float(u2));
+    check<double>(g, map, cosine, u1, u2);
     return 0;
 }

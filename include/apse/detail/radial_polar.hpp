@@ -46,6 +46,16 @@ APSE_FUNC glm::vec<3, T> radial_direction(const EllipseAreas<T>& k, int q, T ct,
     return radial_direction(k, q, ct, st, c, T(1) / (T(1) + c), u2);
 }
 
+/// The orthographic eccentric anomaly (cos tau, sin tau) of the Lambert anomaly lambda given as
+/// (cl, sl) = (cos lambda, sin lambda) >= 0: tan tau = kappa tan lambda, kappa =
+/// cos(alpha/2)/cos(beta/2) (the equal-area image of a small ellipse, exact for caps; the radial
+/// map's first guess and the tabulated map's variable). Writes (ct, st), both >= 0.
+template <class T> APSE_FUNC void lambert_tau(T kappa, T cl, T sl, T& ct, T& st) noexcept {
+    const T px = cl, py = kappa * sl, n = std::sqrt(px * px + py * py);
+    ct = n > T(0) ? px / n : T(1);
+    st = n > T(0) ? py / n : T(0);
+}
+
 /// The two terms of the inverse of radial_direction's u2: u2 = one_minus_cos / one_minus_c.
 template <class T> struct RadialFraction {
     T one_minus_cos;  ///< 1 − cos theta of the direction

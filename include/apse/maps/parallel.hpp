@@ -145,11 +145,21 @@ public:
         if (!(g < T(1))) return areas_.parallel_point(beta);
         const detail::ParallelAreaModel<T> model{&areas_, half_};
         const auto r = detail::invert_area(model, g * half_, T(0), beta,
-                                           areas_.parallel_point(detail::parallel_guess(g, beta, blend_)),
+                                           guess_half(g),
                                            detail::area_tolerance<T>() * half_);
         iterations = r.iterations;
         return r.point;
     }
+
+    /// The first guess of solve_half for the edge fraction g in [0, 1] (the shape-blended
+    /// slice, detail parallel_guess; one sin/cos). Building block of CosineWeighted (a cheap
+    /// approximate image of the square's columns).
+    APSE_FUNC detail::ParallelPoint<T> guess_half(T g) const noexcept {
+        return areas_.parallel_point(detail::parallel_guess(clamp(g, T(0), T(1)), beta_, blend_));
+    }
+
+    /// The per-ellipse constants of the cumulative areas (building block).
+    APSE_FUNC const detail::EllipseAreas<T>& areas() const noexcept { return areas_; }
 
     /// Half-area I(psi) between the slices 0 and psi in [0, beta] (MATH.md §5 I(psi),
     /// cancellation-free; for tests and diagnostics). Omega_p(psi) = Omega/2 ± I(|psi|).

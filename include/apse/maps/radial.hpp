@@ -127,16 +127,29 @@ public:
         iterations = 0;
         if (!(f > T(0))) return areas_.radial_point(T(0), T(1), T(0));
         if (!(f < T(1))) return areas_.radial_point(half_pi_v<T>, T(0), T(1));
-        const T h = f * half_pi_v<T>;
-        const T gc = std::cos(h), gs = kappa_ * std::sin(h);
-        const T gn = std::sqrt(gc * gc + gs * gs);
-        const detail::RadialPoint<T> start = areas_.radial_point(std::atan2(gs, gc), gc / gn, gs / gn);
+        const detail::RadialPoint<T> start = guess_quadrant(f);
         const detail::RadialAreaModel<T> model{&areas_, singular_im2_};
         const auto r = detail::invert_area(model, f * quarter_, T(0), half_pi_v<T>, start,
                                            detail::area_tolerance<T>() * quarter_);
         iterations = r.iterations;
         return r.point;
     }
+
+    /// The first guess of solve_quadrant for the fraction f in [0, 1] of the quadrant's area:
+    /// the Lambert-equal-area azimuth tan tau = kappa tan(f pi/2) (exact for caps and small
+    /// ellipses; one sin/cos, one atan2).
+    APSE_FUNC detail::RadialPoint<T> guess_quadrant(T f) const noexcept {
+        const T h = clamp(f, T(0), T(1)) * half_pi_v<T>;
+        T ct, st;
+        detail::lambert_tau(kappa_, max_of(std::cos(h), T(0)), max_of(std::sin(h), T(0)), ct, st);
+        return areas_.radial_point(std::atan2(st, ct), ct, st);
+    }
+
+    /// The per-ellipse constants of the cumulative areas (building block).
+    APSE_FUNC const detail::EllipseAreas<T>& areas() const noexcept { return areas_; }
+
+    /// kappa = cos(alpha/2)/cos(beta/2), the Lambert guess's ratio (building block).
+    APSE_FUNC T kappa() const noexcept { return kappa_; }
 
     /// Cumulative area of the first quadrant up to the azimuth phi in [0, pi/2] (MATH.md §4
     /// Omega_r(phi), cancellation-free; for tests and diagnostics).

@@ -312,6 +312,12 @@ public:
         return vec2(clamp(u1, T(0), T(1)), u2);
     }
 
+    /// The per-ellipse constants of the cumulative areas (building block).
+    APSE_FUNC const detail::EllipseAreas<T>& areas() const noexcept { return areas_; }
+
+    /// kappa = cos(alpha/2)/cos(beta/2), the ratio of the Lambert anomaly (building block).
+    APSE_FUNC T kappa() const noexcept { return kappa_; }
+
 private:
     struct Azimuth {
         T ct, st;  ///< cos tau, sin tau
