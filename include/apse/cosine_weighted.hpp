@@ -48,6 +48,15 @@ namespace detail {
 /// on the fraction of samples below the horizon).
 template <class T> APSE_FUNC constexpr T cosine_weight_floor() noexcept { return T(0.001); }
 
+/// Row r's position v2 = (r/Rows)^2 in the radial maps' square (rows dense near the centre,
+/// where the cosine along a column, n_z cos theta + h sin theta, grows like sqrt(v2)).
+template <class T> APSE_FUNC constexpr T cosine_row_knot(int r, int rows) noexcept {
+    return (T(r) / T(rows)) * (T(r) / T(rows));
+}
+
+/// The factor applied to negative vertex cosines before interpolation.
+template <class T> APSE_FUNC constexpr T cosine_negative_scale() noexcept { return T(0.5); }
+
 /// cos and sin of j pi / (2 M), j = 0..M, as compile-time constants (Taylor series to 1e-17).
 template <int M> struct QuarterTurns {
     double c[M + 1], s[M + 1];
@@ -72,6 +81,8 @@ template <int M> struct QuarterTurns {
 template <class T, int Cols, int Rows> APSE_FUNC void fill_uniform_warp(BilinearWarp<T, Cols, Rows>& warp) noexcept {
     for (int i = 0; i <= Cols; ++i)
         for (int j = 0; j <= Rows; ++j) warp.weight(i, j) = T(1);
+    warp.set_uniform_knots();
+    warp.set_floor(T(0));
 }
 
 /// Fills the warp of a radial-type map's square (RadialMap, TabulatedMap: v1 = the azimuthal
@@ -101,7 +112,7 @@ APSE_FUNC bool fill_radial_warp(const EllipseAreas<T>& k, T kappa, const glm::ve
         hy[j] = rr > T(0) ? by / rr : T(0);
         const T wv = r2 / (T(1) + k.c_max(ct, st));  // 1 − C: 1 − cos theta at v2 = 1
         for (int r = 0; r <= Rows; ++r) {
-            const T v = (T(r) / T(Rows)) * wv;  // 1 − cos theta
+            const T v = cosine_row_knot<T>(r, Rows) * wv;  // 1 − cos theta
             cos_t[j][r] = T(1) - v;
             sin_t[j][r] = std::sqrt(max_of(v * (T(2) - v), T(0)));
         }
@@ -116,14 +127,12 @@ APSE_FUNC bool fill_radial_warp(const EllipseAreas<T>& k, T kappa, const glm::ve
             for (int j = 0; j <= Rows; ++j) {
                 const T c = n.z * cos_t[jf][j] + hor * sin_t[jf][j];
                 best = max_of(best, c);
-                warp.weight(i, j) = c;
+                warp.weight(i, j) = c > T(0) ? c : cosine_negative_scale<T>() * c;
             }
         }
     if (!(best > T(0))) return false;
-    // weights max(0, cos) + floor
-    const T floor = cosine_weight_floor<T>() * best;
-    for (int i = 0; i < Cols; ++i)
-        for (int j = 0; j <= Rows; ++j) warp.weight(i, j) = max_of(warp.weight(i, j), T(0)) + floor;
+    for (int r = 0; r <= Rows; ++r) warp.row_knot(r) = cosine_row_knot<T>(r, Rows);
+    warp.set_floor(cosine_weight_floor<T>() * best);  // the density: max(0, interpolated cos) + floor
     for (int j = 0; j <= Rows; ++j) warp.weight(Cols, j) = warp.weight(0, j);  // v1 = 1 is v1 = 0
     return true;
 }
@@ -149,15 +158,14 @@ APSE_FUNC bool fill_parallel_warp(const ParallelMap<T>& map, const glm::vec<3, T
             const T rxy = std::sqrt(bn * bn + T(4) * v2 * (T(1) - v2) * p.x_max * p.x_max);
             const T lo = n.x * x + rxy * (-n.y * p.sin_psi + n.z * p.cos_psi);
             const T hi = n.x * x + rxy * (n.y * p.sin_psi + n.z * p.cos_psi);
-            warp.weight(i, j) = lo;
-            warp.weight(Cols - i, j) = hi;
+            warp.weight(i, j) = lo > T(0) ? lo : cosine_negative_scale<T>() * lo;
+            warp.weight(Cols - i, j) = hi > T(0) ? hi : cosine_negative_scale<T>() * hi;
             best = max_of(best, max_of(lo, hi));
         }
     }
     if (!(best > T(0))) return false;
-    const T floor = cosine_weight_floor<T>() * best;
-    for (int i = 0; i <= Cols; ++i)
-        for (int j = 0; j <= Rows; ++j) warp.weight(i, j) = max_of(warp.weight(i, j), T(0)) + floor;
+    warp.set_uniform_knots();
+    warp.set_floor(cosine_weight_floor<T>() * best);
     return true;
 }
 
