@@ -3,17 +3,18 @@
 #pragma once
 
 /// @file detail/bilinear_warp.hpp
-/// A warp of the unit square whose density is the bilinear interpolation of positive weights on
-/// a regular (Cols + 1) × (Rows + 1) grid of vertices (piecewise bilinear over Cols × Rows
-/// cells), sampled by the Knothe–Rosenblatt construction: v1 from the marginal (piecewise linear
-/// in v1: each column's integral over v2 is linear between its two vertex columns), then v2 from
-/// the conditional at v1 (piecewise linear in v2). Both inversions are quadratics solved in
-/// closed form; the inverse warp is the two CDFs. The warp is continuous and monotone in each
-/// coordinate, so it keeps the stratification of its input (docs/cosine_weighted.md).
+/// A warp of the unit square whose density is clamped bilinear: h(v) = max(0, B(v)) + phi, B the
+/// bilinear interpolant of signed values on a (Cols + 1) × (Rows + 1) grid of vertices (columns
+/// at v1 = i/Cols, rows at increasing knots in v2), phi >= 0 a floor. Sampled by the
+/// Knothe–Rosenblatt construction: v1 from a marginal m(v1) that is piecewise linear through
+/// Z(v1) = ∫ h dv2 at Sub nodes per column, then v2 from the conditional h(v1, ·) / Z(v1), which
+/// is piecewise linear (a row whose values change sign is split at its exact zero). Every
+/// inversion is a quadratic solved in closed form; the inverse warp is the two CDFs. The warp is
+/// continuous and monotone in each coordinate, so it keeps the stratification of its input
+/// (docs/cosine_weighted.md).
 ///
-/// Density on the square (normalised): p(v) = B(v) / total, B the bilinear interpolant and
-/// total = ∫ B = sum over columns of (S_i + S_{i+1}) / (2 Cols), S_i = the trapezoid integral of
-/// column i's vertex weights in v2. It is the exact density of sample(), for any weights.
+/// Density on the square (normalised): p(v) = m(v1) h(v) / (Z(v1) total), total = ∫ m: the exact
+/// density of sample(), for any values.
 
 #include <cmath>
 
