@@ -143,15 +143,12 @@ template <class T, int Cols, int Rows> struct BilinearWarp {
     /// Inverse of sample(): the input u whose image is v (v in [0, 1]^2, clamped).
     APSE_FUNC vec2 invert(const vec2& v) const noexcept {
         int q;
-        T sq;
-        locate(v.x, N, q, sq);
+        T sq, c[Rows + 1];
+        column_at(v.x, q, sq, c);
         const int k = q / Sub;
-        const T s = (T(q - k * Sub) + sq) / T(Sub);
         T left = T(0);
         for (int i = k * Sub; i < q; ++i) left += T(0.5) * (col[i] + col[i + 1]);
         const T u1 = (cdf[k] + (left + linear_density_mass(col[q], col[q + 1], sq)) / T(N)) * inv_total;
-        T c[Rows + 1];
-        for (int j = 0; j <= Rows; ++j) c[j] = w[k][j] + s * (w[k + 1][j] - w[k][j]);
         LinearPiece<T> pieces[2 * Rows];
         int np;
         const T z = conditional(c, pieces, np);
@@ -167,25 +164,28 @@ template <class T, int Cols, int Rows> struct BilinearWarp {
 
     /// Density of sample() at v in [0, 1]^2 (clamped), normalised.
     APSE_FUNC T density(const vec2& v) const noexcept {
-        int q, l;
-        T sq, s2;
-        locate(v.x, N, q, sq);
-        const int k = q / Sub;
-        const T s = (T(q - k * Sub) + sq) / T(Sub);
-        T c[Rows + 1];
-        for (int j = 0; j <= Rows; ++j) c[j] = w[k][j] + s * (w[k + 1][j] - w[k][j]);
-        LinearPiece<T> pieces[2 * Rows];
-        int np;
-        const T z = conditional(c, pieces, np);
+        int q;
+        T sq, c[Rows + 1];
+        column_at(v.x, q, sq, c);
+        const T z = mass(c);
         const T y = clamp(v.y, T(0), T(1));
-        l = 0;
+        int l = 0;
         while (l < Rows - 1 && !(y < knot[l + 1])) ++l;
-        s2 = clamp((y - knot[l]) / (knot[l + 1] - knot[l]), T(0), T(1));
+        const T s2 = clamp((y - knot[l]) / (knot[l + 1] - knot[l]), T(0), T(1));
         const T h = max_of(c[l] + s2 * (c[l + 1] - c[l]), T(0)) + phi;
         return (col[q] + sq * (col[q + 1] - col[q])) * h / z * inv_total;
     }
 
 private:
+    /// The marginal interval q of v1 (clamped), the position sq in it, and the column values
+    /// interpolated at v1.
+    APSE_FUNC void column_at(T v1, int& q, T& sq, T (&c)[Rows + 1]) const noexcept {
+        locate(v1, N, q, sq);
+        const int k = q / Sub;
+        const T s = (T(q - k * Sub) + sq) / T(Sub);
+        for (int j = 0; j <= Rows; ++j) c[j] = w[k][j] + s * (w[k + 1][j] - w[k][j]);
+    }
+
     /// Integral over [0, 1] of the conditional density for the column values c (as conditional()).
     APSE_FUNC T mass(const T (&c)[Rows + 1]) const noexcept {
         T z = T(0);
