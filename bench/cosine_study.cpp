@@ -9,7 +9,10 @@
 //      25 × 25 grid of ground receivers in [−3, 3]² (normal +y; reference in closed form);
 //   2. straddling: 400 seeded random receivers near a unit disk, each with a normal that puts the
 //      light across its horizon (reference: 1000 × 1000 midpoint quadrature over the disk).
-// Usage: cosine_study [trials]   (default 8 trials per receiver)
+//   3. with `demo`: the demo's plane-scene pixels (the ground points its camera sees through the
+//      pixel centres), jittered points against the demo's own scrambled Sobol' points, split by
+//      the distance to the light — why the demo's gain differs from the receiver grid's.
+// Usage: cosine_study [trials] [demo]   (default 8 trials per receiver)
 
 #include <cmath>
 #include <cstdio>
