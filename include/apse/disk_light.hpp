@@ -59,8 +59,8 @@ template <class T> struct DiskLightSample {
 /// set by the cosine-weighted samplers; the plain maps alone would take 416 and 208).
 template <class T> class DiskLight {
 public:
-    using vec2 = glm::vec<2, T>;
-    using vec3 = glm::vec<3, T>;
+    using vec2 = glm::vec<2, T>;  ///< a point of the unit square
+    using vec3 = glm::vec<3, T>;  ///< a 3-D vector (direction, point or normal)
 
     /// Disk {p : (p − center)·normal = 0, |p − center| <= radius} seen from `o`; `normal` need
     /// not be unit. Degenerate or invalid input (see project_disk: o in the disk's plane,

@@ -67,7 +67,7 @@ template <class T>
 APSE_FUNC SphericalEllipse<T> ellipse_of_cone(const Sym3<T>& c, const Sym3<T>& cinv, T k2, T det_b,
                                               const glm::vec<3, T> basis[3],
                                               const glm::vec<3, T>& toward) noexcept {
-    using vec3 = glm::vec<3, T>;
+    using vec3 = glm::vec<3, T>;  ///< a 3-D vector (direction, point or normal)
     using E = SphericalEllipse<T>;
     const SymmetricEigen3<T> ec = symmetric_eigen3(c.m00, c.m01, c.m02, c.m11, c.m12, c.m22);
     const SymmetricEigen3<T> ei = symmetric_eigen3(cinv.m00, cinv.m01, cinv.m02, cinv.m11, cinv.m12, cinv.m22);
@@ -134,7 +134,7 @@ APSE_FUNC bool disk_faces(const glm::vec<3, T>& o, const glm::vec<3, T>& center,
 template <class T>
 APSE_FUNC SphericalEllipse<T> project_disk(const glm::vec<3, T>& o, const glm::vec<3, T>& center,
                                            const glm::vec<3, T>& normal, T radius) noexcept {
-    using vec3 = glm::vec<3, T>;
+    using vec3 = glm::vec<3, T>;  ///< a 3-D vector (direction, point or normal)
     using E = SphericalEllipse<T>;
     const vec3 w0 = center - o;
     const T w_max = detail::max_abs3(w0);
@@ -284,7 +284,7 @@ template <class T>
 APSE_FUNC SphericalEllipse<T> project_ellipse(const glm::vec<3, T>& o, const glm::vec<3, T>& center,
                                               const glm::vec<3, T>& semi_axis_u,
                                               const glm::vec<3, T>& semi_axis_v) noexcept {
-    using vec3 = glm::vec<3, T>;
+    using vec3 = glm::vec<3, T>;  ///< a 3-D vector (direction, point or normal)
     using E = SphericalEllipse<T>;
     const vec3 p0 = center - o;
     if (!detail::finite3(p0) || !detail::finite3(semi_axis_u) || !detail::finite3(semi_axis_v))
@@ -340,7 +340,7 @@ APSE_FUNC SphericalEllipse<T> project_ellipse(const glm::vec<3, T>& o, const glm
 template <class T>
 APSE_FUNC SphericalEllipse<T> project_sphere(const glm::vec<3, T>& o, const glm::vec<3, T>& center,
                                              T radius) noexcept {
-    using vec3 = glm::vec<3, T>;
+    using vec3 = glm::vec<3, T>;  ///< a 3-D vector (direction, point or normal)
     using E = SphericalEllipse<T>;
     const vec3 p0 = center - o;
     const T p_max = detail::max_abs3(p0);
@@ -373,7 +373,7 @@ template <class T>
 APSE_FUNC SphericalEllipse<T> project_ellipsoid(const glm::vec<3, T>& o, const glm::vec<3, T>& center,
                                                 const glm::vec<3, T>& axis1, const glm::vec<3, T>& axis2,
                                                 const glm::vec<3, T>& axis3) noexcept {
-    using vec3 = glm::vec<3, T>;
+    using vec3 = glm::vec<3, T>;  ///< a 3-D vector (direction, point or normal)
     using E = SphericalEllipse<T>;
     const vec3 q0 = o - center;
     if (!detail::finite3(q0) || !detail::finite3(axis1) || !detail::finite3(axis2) || !detail::finite3(axis3))

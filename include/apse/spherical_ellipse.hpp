@@ -78,7 +78,7 @@ template <class T> APSE_FUNC void sin_cos_of_atan2(T ta, T tb, SinCos<T>& a, Sin
 template <class T> struct SphericalEllipse {
     static_assert(sizeof(T) == sizeof(float) || sizeof(T) == sizeof(double),
                   "apse: T must be float or double");
-    using vec3 = glm::vec<3, T>;
+    using vec3 = glm::vec<3, T>;  ///< a 3-D vector (direction, point or normal)
 
     vec3 x;  ///< major-axis direction (world space, unit)
     vec3 y;  ///< minor-axis direction (world space, unit), y = z × x

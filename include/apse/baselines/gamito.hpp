@@ -36,7 +36,7 @@ namespace detail {
 template <class T>
 APSE_FUNC SphericalRectangle<T> gamito_square(const glm::vec<3, T>& o, const glm::vec<3, T>& center,
                                               const glm::vec<3, T>& normal, T radius) noexcept {
-    using vec3 = glm::vec<3, T>;
+    using vec3 = glm::vec<3, T>;  ///< a 3-D vector (direction, point or normal)
     const vec3 n = robust_normalize(normal);
     const vec3 w0 = center - o;
     if (!(radius > T(0)) || !is_finite(radius) || !(glm::dot(n, n) > T(0)) || !finite3(w0))
@@ -124,8 +124,8 @@ template <class T> struct AttemptSequence {
 /// (every pdf 0) for degenerate input or o in the disk's plane. Measure: solid angle.
 template <class T> class GamitoSingleShot {
 public:
-    using vec2 = glm::vec<2, T>;
-    using vec3 = glm::vec<3, T>;
+    using vec2 = glm::vec<2, T>;  ///< a point of the unit square
+    using vec3 = glm::vec<3, T>;  ///< a 3-D vector (direction, point or normal)
 
     /// An empty sampler.
     GamitoSingleShot() = default;
@@ -175,8 +175,8 @@ private:
 /// (also empty if project_disk finds the disk empty). Measure: solid angle.
 template <class T> class GamitoRetry {
 public:
-    using vec2 = glm::vec<2, T>;
-    using vec3 = glm::vec<3, T>;
+    using vec2 = glm::vec<2, T>;  ///< a point of the unit square
+    using vec3 = glm::vec<3, T>;  ///< a 3-D vector (direction, point or normal)
 
     /// An empty sampler.
     GamitoRetry() = default;

@@ -168,8 +168,8 @@ APSE_FUNC T rectangle_solid_angle(T x0, T w, T y0, T h, T d) noexcept {
 /// Trivially copyable, no heap: pass it to kernels by value.
 template <class T> class SphericalRectangle {
 public:
-    using vec2 = glm::vec<2, T>;
-    using vec3 = glm::vec<3, T>;
+    using vec2 = glm::vec<2, T>;  ///< a point of the unit square
+    using vec3 = glm::vec<3, T>;  ///< a 3-D vector (direction, point or normal)
 
     /// An empty rectangle (solid angle 0; `sample` returns pdf 0).
     SphericalRectangle() = default;

@@ -24,8 +24,8 @@ namespace apse {
 /// RadialMap). Trivially copyable.
 template <class T> class LdRadialMap {
 public:
-    using vec2 = glm::vec<2, T>;
-    using vec3 = glm::vec<3, T>;
+    using vec2 = glm::vec<2, T>;  ///< a point of the unit square
+    using vec3 = glm::vec<3, T>;  ///< a 3-D vector (direction, point or normal)
 
     /// Builds the map for `ellipse` (empty allowed: every sample then has pdf 0).
     APSE_FUNC explicit LdRadialMap(const SphericalEllipse<T>& ellipse) noexcept : radial_(ellipse) {}

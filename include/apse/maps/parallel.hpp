@@ -51,8 +51,8 @@ template <class T> APSE_FUNC T parallel_guess(T g, T beta, T w) noexcept {
 /// error <= 1e-14 (double) / 1e-6 (float) relative to Omega/2. Trivially copyable.
 template <class T> class ParallelMap {
 public:
-    using vec2 = glm::vec<2, T>;
-    using vec3 = glm::vec<3, T>;
+    using vec2 = glm::vec<2, T>;  ///< a point of the unit square
+    using vec3 = glm::vec<3, T>;  ///< a 3-D vector (direction, point or normal)
 
     /// Builds the map for `ellipse` (empty allowed: every sample then has pdf 0).
     APSE_FUNC explicit ParallelMap(const SphericalEllipse<T>& ellipse) noexcept

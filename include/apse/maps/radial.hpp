@@ -35,8 +35,8 @@ namespace apse {
 /// Trivially copyable (pass it to kernels by value).
 template <class T> class RadialMap {
 public:
-    using vec2 = glm::vec<2, T>;
-    using vec3 = glm::vec<3, T>;
+    using vec2 = glm::vec<2, T>;  ///< a point of the unit square
+    using vec3 = glm::vec<3, T>;  ///< a 3-D vector (direction, point or normal)
 
     /// Builds the map for `ellipse` (any SphericalEllipse, empty included: then every sample has
     /// pdf 0).

@@ -155,8 +155,8 @@ using TabulationTable = TabulationTableN<128, 17, 9>;
 /// (the table must outlive the map). Trivially copyable.
 template <class T> class TabulatedMap {
 public:
-    using vec2 = glm::vec<2, T>;
-    using vec3 = glm::vec<3, T>;
+    using vec2 = glm::vec<2, T>;  ///< a point of the unit square
+    using vec3 = glm::vec<3, T>;  ///< a 3-D vector (direction, point or normal)
 
     /// Builds the map for `ellipse` with the table `table` (set-up: the ellipse's cumulative-area
     /// constants, kappa, the four blended rows and their weights; one sqrt and a few divisions).
@@ -367,8 +367,8 @@ private:
 /// Trivially copyable.
 template <class T> class TabulatedLdRadialMap {
 public:
-    using vec2 = glm::vec<2, T>;
-    using vec3 = glm::vec<3, T>;
+    using vec2 = glm::vec<2, T>;  ///< a point of the unit square
+    using vec3 = glm::vec<3, T>;  ///< a 3-D vector (direction, point or normal)
 
     /// Builds the map (as TabulatedMap; empty ellipse or invalid view: pdf 0 everywhere).
     APSE_FUNC TabulatedLdRadialMap(const SphericalEllipse<T>& ellipse, const TabulationView& table) noexcept
