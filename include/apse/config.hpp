@@ -4,6 +4,22 @@
 
 /// @file config.hpp
 /// Version macros and the function qualifiers every public apse function carries.
+///
+/// Macros a user may define before including apse:
+/// * `APSE_NO_SIMD`: no SSE intrinsics on x86 hosts (detail/pairs.hpp computes its pairs of
+///   square roots and quotients with scalar operations, as in device code; results identical).
+/// * `APSE_DISABLE_ASSERT`: turns `APSE_ASSERT` off without `NDEBUG`.
+
+// C++17 is required (if constexpr, inline variables, hex float literals). MSVC reports
+// __cplusplus as 199711L unless /Zc:__cplusplus is given; _MSVC_LANG holds the real value.
+#if defined(_MSVC_LANG)
+#define APSE_CPLUSPLUS _MSVC_LANG
+#else
+#define APSE_CPLUSPLUS __cplusplus
+#endif
+#if APSE_CPLUSPLUS < 201703L
+#error "apse requires C++17 or later (compile with -std=c++17, or /std:c++17 for MSVC)"
+#endif
 
 #define APSE_VERSION_MAJOR 0
 #define APSE_VERSION_MINOR 1
