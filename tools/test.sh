@@ -4,12 +4,18 @@
 #   release : g++, Release, all tests + consumer tests (find_package / add_subdirectory /
 #             FetchContent) + the nvcc device-compile test + benchmark smoke runs
 #   sanitize: g++, Debug, AddressSanitizer + UndefinedBehaviorSanitizer
-#   clang   : clang++, Release, plus the libFuzzer targets run for a few seconds each
+#   clang   : clang++, Release, plus the five libFuzzer targets run from their committed corpora
+#             (85 s in all)
+#   fastmath: g++ -O3 -ffast-math: the robustness, statistics and fuzz-corpus tests
+#   fma-nosimd: g++ -march=x86-64-v3 (FMA contraction on) with APSE_NO_SIMD (the scalar pairs):
+#             the whole suite
+#   aarch64 : g++-aarch64-linux-gnu cross build, run under qemu-user: the whole suite
 # Prints "N passed, N failed" over all builds at the end; exits non-zero on any failure.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 . tools/deps.sh
-apse_install_deps "${APSE_BASE_PACKAGES[@]}" clang libclang-rt-14-dev libboost-math-dev
+apse_install_deps "${APSE_BASE_PACKAGES[@]}" clang libclang-rt-14-dev libboost-math-dev \
+  g++-aarch64-linux-gnu qemu-user
 
 jobs=${APSE_JOBS:-2}
 passed=0
@@ -43,6 +49,14 @@ run_build sanitize -DCMAKE_BUILD_TYPE=Debug -DCMAKE_CXX_COMPILER=g++ \
   -DAPSE_TEST_CONSUMERS=OFF -DAPSE_TEST_CUDA=OFF -DAPSE_BUILD_BENCHMARKS=OFF
 run_build clang -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_COMPILER=clang++ -DAPSE_BUILD_FUZZERS=ON \
   -DAPSE_TEST_CONSUMERS=OFF -DAPSE_TEST_CUDA=OFF
+run_build fastmath -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_COMPILER=g++ "-DCMAKE_CXX_FLAGS=-O3 -ffast-math" \
+  "-DAPSE_TEST_SPEC=[robust],[robustness],[chi2],[unbiased],[mc]" -DAPSE_TEST_CONSUMERS=OFF \
+  -DAPSE_TEST_CUDA=OFF -DAPSE_BUILD_BENCHMARKS=OFF -DAPSE_BUILD_EXAMPLES=OFF
+run_build fma-nosimd -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_COMPILER=g++ \
+  "-DCMAKE_CXX_FLAGS=-march=x86-64-v3 -ffp-contract=fast -DAPSE_NO_SIMD" -DAPSE_TEST_CONSUMERS=OFF \
+  -DAPSE_TEST_CUDA=OFF -DAPSE_BUILD_BENCHMARKS=OFF -DAPSE_BUILD_EXAMPLES=OFF
+run_build aarch64 -DCMAKE_BUILD_TYPE=Release -DCMAKE_TOOLCHAIN_FILE=cmake/aarch64-linux-gnu.cmake \
+  -DAPSE_TEST_CONSUMERS=OFF -DAPSE_TEST_CUDA=OFF -DAPSE_BUILD_BENCHMARKS=OFF -DAPSE_BUILD_EXAMPLES=OFF
 echo "== all builds done in $(( $(date +%s) - start )) s"
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]

@@ -95,9 +95,10 @@ template <class T> APSE_FUNC constexpr T min_of(T a, T b) noexcept { return a < 
 /// The larger of a and b (b if either is NaN).
 template <class T> APSE_FUNC constexpr T max_of(T a, T b) noexcept { return a > b ? a : b; }
 
-/// x clamped to [lo, hi]; NaN maps to lo.
-template <class T> APSE_FUNC constexpr T clamp(T x, T lo, T hi) noexcept {
-    return x > lo ? (x < hi ? x : hi) : lo;
+/// x clamped to [lo, hi]; NaN maps to lo (tested on the bits, so also under -ffast-math, where
+/// the comparisons alone may let a NaN through).
+template <class T> APSE_FUNC T clamp(T x, T lo, T hi) noexcept {
+    return is_nan(x) ? lo : (x > lo ? (x < hi ? x : hi) : lo);
 }
 
 /// sqrt(max(x, 0)): for quantities that are non-negative in exact arithmetic but may round
