@@ -217,7 +217,7 @@ TEMPLATE_TEST_CASE("elliptic: outside the domain the result is NaN", "[elliptic]
     CHECK(is_nan(apse::comp_ellint_pi(nan, T(0.5))));
 }
 
-TEMPLATE_TEST_CASE("elliptic: pathological inputs return quickly, finite or NaN", "[elliptic][robust]",
+TEMPLATE_TEST_CASE("elliptic: pathological inputs return quickly, finite or NaN", "[elliptic][robust][denormals]",
                    float, double) {
     using T = TestType;
     using L = std::numeric_limits<T>;
