@@ -3,7 +3,9 @@
 // switch is honoured and that the scalar pairs give the correctly rounded results the SSE ones
 // give (IEEE square roots and quotients are correctly rounded either way). A plain executable: it
 // needs no test framework.
+#ifndef APSE_NO_SIMD  // (the fma-nosimd configuration defines it for every file)
 #define APSE_NO_SIMD
+#endif
 #include <apse/detail/pairs.hpp>
 
 #include <cmath>

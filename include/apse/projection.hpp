@@ -278,8 +278,8 @@ APSE_FUNC bool ellipse_faces(const glm::vec<3, T>& o, const glm::vec<3, T>& cent
 /// the exact determinant (detail::ellipse_of_cone), so thin ellipses, far lights and points near
 /// the plane all keep full relative accuracy. Cost: two 3×3 Jacobi solves (~1 µs).
 /// Two-sided; empty for o in the plane, parallel/zero/non-finite axes, NaN/Inf anywhere (see
-/// the file comment). Accuracy: as project_disk, a few times its rounding error
-/// (docs/projection.md).
+/// the file comment; axes within ~8 eps of parallel count as parallel). Accuracy: as
+/// project_disk, a few times its rounding error (docs/projection.md).
 template <class T>
 APSE_FUNC SphericalEllipse<T> project_ellipse(const glm::vec<3, T>& o, const glm::vec<3, T>& center,
                                               const glm::vec<3, T>& semi_axis_u,
@@ -293,7 +293,13 @@ APSE_FUNC SphericalEllipse<T> project_ellipse(const glm::vec<3, T>& o, const glm
     if (!(s_max > T(0))) return E::make_empty();
     const detail::Pow2Scale<T> sc = detail::pow2_scale_for(s_max);
     const vec3 p = sc(p0), u = sc(semi_axis_u), v = sc(semi_axis_v);
-    const vec3 n = detail::robust_normalize(glm::cross(u, v));
+    // Parallel axes: u × v is then a rounding residual, which is not exactly 0 when the compiler
+    // contracts a·b − c·d into an FMA (-march=x86-64-v3, AArch64, nvcc); below 8 eps |u| |v|
+    // (per component) the axes are taken as parallel, so the ellipse is empty either way.
+    const vec3 uxv = glm::cross(u, v);
+    if (!(detail::max_abs3(uxv) > T(8) * epsilon<T>() * detail::max_abs3(u) * detail::max_abs3(v)))
+        return E::make_empty();
+    const vec3 n = detail::robust_normalize(uxv);
     if (!(glm::dot(n, n) > T(0))) return E::make_empty();
     const vec3 e1 = detail::robust_normalize(u - glm::dot(u, n) * n);
     if (!(glm::dot(e1, e1) > T(0))) return E::make_empty();

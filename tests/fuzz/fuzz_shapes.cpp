@@ -17,8 +17,13 @@
 namespace {
 
 double g_in[16];
+int g_shape = 0, g_map = 0;  // printed on failure
 
-[[noreturn]] void fail(const char* what) { apse_fuzz::fail("fuzz_shapes", what, g_in, 16); }
+[[noreturn]] void fail(const char* what) {
+    std::fprintf(stderr, "shape %d (ellipse, sphere, ellipsoid), map %d (radial, ld_radial, parallel, tabulated, "
+                         "tabulated_ld_radial)\n", g_shape, g_map);
+    apse_fuzz::fail("fuzz_shapes", what, g_in, 16);
+}
 
 const apse::TabulationTable& table() {
     static const apse::TabulationTable* t = [] {
@@ -84,6 +89,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         for (int i = 0; i < 3; ++i) { g_in[9 + i] = n2[i]; g_in[12 + i] = n3[i]; }
     }
     const double u1 = apse_fuzz::unit(in), u2 = apse_fuzz::unit(in);
+    g_shape = shape;
+    g_map = map;
     check<float>(shape, map, float(u1), float(u2));
     check<double>(shape, map, u1, u2);
     return 0;
