@@ -375,6 +375,23 @@ TEMPLATE_TEST_CASE("rectangle: two-sided, and defined behaviour on degenerate in
         }
     }
 
+    // Coordinates near the type's maximum (also found by fuzz_rectangle): the point lies ~1.4
+    // DBL_MAX from o, a distance double cannot hold. No sample then (pdf 0), never pdf > 0 with
+    // an infinite distance. (In float the inputs overflow to inf: an empty rectangle.)
+    {
+        const T big = std::numeric_limits<T>::max();
+        const T tiny = T(1e-300);  // 0 in float
+        const apse::SphericalRectangle<T> r(V(0, big, 0), V(T(-3), tiny, big), V(0, 1, 1), V(tiny, 1, 1));
+        for (const V2 u : {V2(T(1), T(0.043941662358302699)), V2(T(0.5), T(0.5)), V2(T(0.9), T(0.1))}) {
+            const auto p = r.sample_point(u);
+            CHECK(apse::is_finite(p.pdf));
+            if (p.pdf > T(0)) {
+                CHECK(apse::is_finite(p.distance));
+                CHECK((apse::is_finite(p.point.x) && apse::is_finite(p.point.y) && apse::is_finite(p.point.z)));
+            }
+        }
+    }
+
     // o mirrored through the plane sees the same solid angle; samples are mirrored
     const apse::SphericalRectangle<T> above(V(0.3, 0.2, 0.5), s, ex, ey), below(V(0.3, 0.2, -0.5), s, ex, ey);
     CHECK(above.solid_angle() == below.solid_angle());

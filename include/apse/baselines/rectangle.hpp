@@ -424,12 +424,13 @@ private:
         RectanglePoint<T> r;
         r.direction = detail::robust_normalize(v);
         r.distance = glm::dot(v, r.direction);  // |v|, without overflow
-        // v = 0 after rounding (a point next to o on a rectangle ~1e16 (double) or ~1e7 (float)
-        // times larger than o's distance to it, where v cancels): no usable direction, no sample
-        const bool usable = r.distance > T(0);
-        if (!usable) r.direction = vec3(T(0), T(0), T(1));
-        r.pdf = usable ? pdf : T(0);
         r.point = base_ + tw * xh_ + sw * yh_;
+        // No sample (pdf 0) when v = 0 after rounding (a point next to o on a rectangle ~1e16
+        // (double) or ~1e7 (float) times larger than o's distance to it, where v cancels) or when
+        // the point or its distance is beyond the type's range (coordinates near its maximum)
+        const bool usable = r.distance > T(0) && is_finite(r.distance) && detail::finite3(r.point);
+        if (!(r.distance > T(0))) r.direction = vec3(T(0), T(0), T(1));
+        r.pdf = usable ? pdf : T(0);
         r.st = vec2(t / w_, s / h_);
         return r;
     }
