@@ -389,13 +389,17 @@ APSE_FUNC SphericalEllipse<T> project_ellipsoid(const glm::vec<3, T>& o, const g
     if (!(s_max > T(0))) return E::make_empty();
     const detail::Pow2Scale<T> sc = detail::pow2_scale_for(s_max);
     const vec3 q = sc(q0), A1 = sc(axis1), A2 = sc(axis2), A3 = sc(axis3);
-    // Lengths as |A| = A · (A / |A|) from the scale-free unit vectors: the squared lengths of axes
-    // ~1e-21 times the largest (scaled units) are float denormals, whose few bits left e1 = A1/a1
-    // 1e-4 off unit length, and the frame with it (found by fuzz_shapes).
-    const vec3 e1 = detail::robust_normalize(A1);
-    const T a1 = glm::dot(A1, e1), a2 = glm::dot(A2, detail::robust_normalize(A2)),
-            a3 = glm::dot(A3, detail::robust_normalize(A3));
+    // The squared length of an axis ~1e-21 times the largest (scaled units) is a float denormal,
+    // whose few bits left e1 = A1/a1 1e-4 off unit length, and the frame with it (found by
+    // fuzz_shapes): e1 comes from the scale-free robust_normalize, and below the normal range a
+    // length is A · (A/|A|) instead of sqrt(A · A).
+    const auto length = [](const vec3& a) {
+        const T d = glm::dot(a, a);
+        return d >= detail::square_safe_min<T>() ? std::sqrt(d) : glm::dot(a, detail::robust_normalize(a));
+    };
+    const T a1 = length(A1), a2 = length(A2), a3 = length(A3);
     if (!(a1 > T(0) && a2 > T(0) && a3 > T(0))) return E::make_empty();
+    const vec3 e1 = detail::robust_normalize(A1);
     const T tol = T(1e-3);
     if (!(std::fabs(glm::dot(e1, A2)) <= tol * a2 && std::fabs(glm::dot(e1, A3)) <= tol * a3 &&
           std::fabs(glm::dot(A2, A3)) <= tol * a2 * a3))
