@@ -12,6 +12,7 @@
 #include <apse/projection.hpp>
 
 #include "support/cone_cells.hpp"
+#include "support/default_table.hpp"
 
 #include <catch2/catch.hpp>
 
@@ -67,14 +68,6 @@ const std::vector<Shape>& shapes() {
     return s;
 }
 
-const apse::TabulationTable& table() {
-    static const apse::TabulationTable* t = [] {
-        static apse::TabulationTable tt;
-        tt.build();
-        return &tt;
-    }();
-    return *t;
-}
 
 /// Calls f(name, map) for the three exact maps and, if `tabulated`, the two tabulated ones.
 template <class T, class F> void for_each_map(const apse::SphericalEllipse<T>& e, bool tabulated, F&& f) {
@@ -82,8 +75,8 @@ template <class T, class F> void for_each_map(const apse::SphericalEllipse<T>& e
     f(std::string("ld_radial"), apse::LdRadialMap<T>(e));
     f(std::string("parallel"), apse::ParallelMap<T>(e));
     if (tabulated) {
-        f(std::string("tabulated"), apse::TabulatedMap<T>(e, table().view()));
-        f(std::string("tabulated_ld_radial"), apse::TabulatedLdRadialMap<T>(e, table().view()));
+        f(std::string("tabulated"), apse::TabulatedMap<T>(e, apse_test::default_table().view()));
+        f(std::string("tabulated_ld_radial"), apse::TabulatedLdRadialMap<T>(e, apse_test::default_table().view()));
     }
 }
 

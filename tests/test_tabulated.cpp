@@ -8,6 +8,7 @@
 #include <apse/maps/tabulated.hpp>
 #include <apse/projection.hpp>
 
+#include "support/default_table.hpp"
 #include "support/map_testing.hpp"
 
 #include <catch2/catch.hpp>
@@ -22,15 +23,7 @@ namespace {
 template <class T> using Vec2 = glm::vec<2, T>;
 template <class T> using Vec3 = glm::vec<3, T>;
 
-/// The default table, built once (77 KB: static storage, not the stack).
-const apse::TabulationTable& default_table() {
-    static const apse::TabulationTable* table = [] {
-        static apse::TabulationTable t;
-        t.build();
-        return &t;
-    }();
-    return *table;
-}
+using apse_test::default_table;
 
 /// A deliberately *distorted* table (64 bins, 2 x 2 shapes; rows F(x) = x + A sin(2 pi m x)/(2 pi m)
 /// with A = 0.5, m = 1, 3 (not 2, whose distortion averages out over the test's 16 sectors):

@@ -10,6 +10,7 @@
 #include <apse/maps/tabulated.hpp>
 #include <apse/projection.hpp>
 
+#include "../support/default_table.hpp"
 #include "fuzz_common.hpp"
 
 #include <cstdint>
@@ -25,14 +26,6 @@ int g_shape = 0, g_map = 0;  // printed on failure
     apse_fuzz::fail("fuzz_shapes", what, g_in, 16);
 }
 
-const apse::TabulationTable& table() {
-    static const apse::TabulationTable* t = [] {
-        static apse::TabulationTable tt;
-        tt.build();
-        return &tt;
-    }();
-    return *t;
-}
 
 template <class T, class Map> void check_map(const Map& map, const apse::SphericalEllipse<T>& e, T u1, T u2) {
     const auto s = map.sample(glm::vec<2, T>(u1, u2));
@@ -68,8 +61,8 @@ template <class T> void check(int shape, int map, T u1, T u2) {
         case 0: check_map<T>(apse::RadialMap<T>(e), e, u1, u2); break;
         case 1: check_map<T>(apse::LdRadialMap<T>(e), e, u1, u2); break;
         case 2: check_map<T>(apse::ParallelMap<T>(e), e, u1, u2); break;
-        case 3: check_map<T>(apse::TabulatedMap<T>(e, table().view()), e, u1, u2); break;
-        default: check_map<T>(apse::TabulatedLdRadialMap<T>(e, table().view()), e, u1, u2); break;
+        case 3: check_map<T>(apse::TabulatedMap<T>(e, apse_test::default_table().view()), e, u1, u2); break;
+        default: check_map<T>(apse::TabulatedLdRadialMap<T>(e, apse_test::default_table().view()), e, u1, u2); break;
     }
 }
 
