@@ -4,8 +4,8 @@
 
 /// @file disk_light.hpp
 /// The one-call convenience a renderer wants for a disk light: project the disk seen from the
-/// shading point to its spherical ellipse (projection.hpp, MATH.md §2), sample it with one of the
-/// area-preserving maps (maps/*.hpp, MATH.md §4–5), and return the direction, the point on the
+/// shading point to its spherical ellipse (projection.hpp, docs/math.md §2), sample it with one of the
+/// area-preserving maps (maps/*.hpp, docs/math.md §4–5), and return the direction, the point on the
 /// disk, its distance and the pdf in solid angle; plus the pdf of any direction (for MIS).
 ///
 ///     // per shading point o, for each of n stratified points u:
@@ -39,9 +39,9 @@ namespace apse {
 /// Which area-preserving map a DiskLight uses (all three give the same, uniform, density; they
 /// differ in how they distort the square and so in how well they keep stratification).
 enum class DiskMap {
-    radial,     ///< RadialMap (MATH.md §4)
+    radial,     ///< RadialMap (docs/math.md §4)
     ld_radial,  ///< LdRadialMap: continuous on the whole square; the default
-    parallel,   ///< ParallelMap (MATH.md §5)
+    parallel,   ///< ParallelMap (docs/math.md §5)
 };
 
 /// One sample of a disk light.

@@ -3,7 +3,7 @@
 #pragma once
 
 /// @file baselines/gamito.hpp
-/// The Gamito (EGSR 2016) baseline for disk lights, MATH.md §7: sample the spherical rectangle
+/// The Gamito (EGSR 2016) baseline for disk lights, docs/math.md §7: sample the spherical rectangle
 /// of the disk's circumscribed square (side 2r, one edge along the symmetry plane through o,
 /// the centre and the normal) with the Ureña–Fajardo–King map (rectangle.hpp) and reject what
 /// misses the disk. Two **unbiased** variants — the pdf each reports is the density it really
@@ -29,7 +29,7 @@
 namespace apse {
 namespace detail {
 
-/// The disk's circumscribed square as a SphericalRectangle seen from o (MATH.md §7): centred on
+/// The disk's circumscribed square as a SphericalRectangle seen from o (docs/math.md §7): centred on
 /// `center`, side 2·radius, edge_y along the in-plane direction from o's foot point to the
 /// centre (any in-plane direction when o is on the axis), edge_x = edge_y × normal. Empty for
 /// radius <= 0, a zero or non-finite normal, NaN/Inf coordinates, o in the plane.
@@ -115,7 +115,7 @@ template <class T> struct AttemptSequence {
 
 }  // namespace detail
 
-/// Gamito single shot: one Ureña sample of the disk's circumscribed square (MATH.md §7); if it
+/// Gamito single shot: one Ureña sample of the disk's circumscribed square (docs/math.md §7); if it
 /// lands on the disk it is returned with pdf 1/Omega_square (the density it was drawn from),
 /// otherwise "no sample" (pdf 0). E[f/pdf · 1_sample] = int_disk f: unbiased. Acceptance
 /// probability Omega_disk/Omega_square (~0.75–0.83; far-field limit pi/4 for a frontal disk).
@@ -163,7 +163,7 @@ private:
 };
 
 /// Gamito with bounded retries: up to `max_attempts` = N Ureña samples of the circumscribed
-/// square (MATH.md §7), the first on u and the others on the deterministic pseudo-random
+/// square (docs/math.md §7), the first on u and the others on the deterministic pseudo-random
 /// sequence detail::AttemptSequence keyed by u's bits (no unbounded loop). The first one that
 /// lands on the disk is returned with its exact density
 ///     pdf = (1 − (1 − A)^N) / Omega_disk,   A = Omega_disk / Omega_square
