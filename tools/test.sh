@@ -59,9 +59,13 @@ run_build fastmath -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_COMPILER=g++ \
   "-DCMAKE_CXX_FLAGS=-O3 -ffast-math -fno-finite-math-only" \
   "-DAPSE_TEST_SPEC=[robust]~[denormals],[robustness],[chi2],[unbiased],[mc]" -DAPSE_TEST_CONSUMERS=OFF \
   -DAPSE_TEST_CUDA=OFF -DAPSE_BUILD_BENCHMARKS=OFF -DAPSE_BUILD_EXAMPLES=OFF
-run_build fma-nosimd -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_COMPILER=g++ \
-  "-DCMAKE_CXX_FLAGS=-march=x86-64-v3 -ffp-contract=fast -DAPSE_NO_SIMD" -DAPSE_TEST_CONSUMERS=OFF \
-  -DAPSE_TEST_CUDA=OFF -DAPSE_BUILD_BENCHMARKS=OFF -DAPSE_BUILD_EXAMPLES=OFF
+if grep -qw avx2 /proc/cpuinfo && grep -qw fma /proc/cpuinfo; then
+  run_build fma-nosimd -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_COMPILER=g++ \
+    "-DCMAKE_CXX_FLAGS=-march=x86-64-v3 -ffp-contract=fast -DAPSE_NO_SIMD" -DAPSE_TEST_CONSUMERS=OFF \
+    -DAPSE_TEST_CUDA=OFF -DAPSE_BUILD_BENCHMARKS=OFF -DAPSE_BUILD_EXAMPLES=OFF
+else
+  echo "== [fma-nosimd] skipped: this CPU lacks AVX2/FMA, so -march=x86-64-v3 binaries cannot run here"
+fi
 run_build aarch64 -DCMAKE_BUILD_TYPE=Release -DCMAKE_TOOLCHAIN_FILE=cmake/aarch64-linux-gnu.cmake \
   "-DAPSE_TEST_SPEC=~[chi2]~[unbiased]~[mc]~[stratification]" -DAPSE_TEST_CONSUMERS=OFF \
   -DAPSE_TEST_CUDA=OFF -DAPSE_BUILD_BENCHMARKS=OFF -DAPSE_BUILD_EXAMPLES=OFF
