@@ -41,6 +41,9 @@ namespace detail {
 /// Hard cap on duplication steps. Valid inputs need at most ~16 (double, arguments spanning
 /// the whole exponent range); the cap only bounds the work for inputs that are not.
 constexpr int carlson_max_steps = 64;
+/// Steps run on one count before the count is made again (see duplicate_until_converged): more
+/// than any argument ratio up to 4^16 needs, so such inputs count once.
+constexpr int carlson_chunk_steps = 16;
 
 /// Stopping tolerance on max |X_i| for R_F: (eps / (8 C))^(1/10), C = 0.0129 the largest
 /// coefficient of the degree-10 truncation error (maximised numerically over all directions,
@@ -198,17 +201,26 @@ APSE_FUNC T duplicate_until_converged(T q, T a0, Step&& step, Lower&& lower) noe
     step(f);
     f *= T(0.25);
     T rest = q * f;
-    const T lo = lower();
-    int n = 0;
-    while (rest > lo && n < carlson_max_steps) {
-        rest *= T(0.25);
-        ++n;
+    int done = 2;
+    for (;;) {
+        // Steps needed if the smallest argument stayed at its current value; it only grows, so
+        // for widely spread arguments (ratios beyond ~4^16) this overestimates: run at most
+        // carlson_chunk_steps of them, then count again from the grown smallest argument.
+        const T lo = lower();
+        int n = 0;
+        while (rest > lo && n < carlson_chunk_steps && done + n < carlson_max_steps) {
+            rest *= T(0.25);
+            ++n;
+        }
+        for (int i = 0; i < n; ++i) {
+            step(f);
+            f *= T(0.25);
+        }
+        done += n;
+        if (!(rest > lo)) return f;
+        if (done >= carlson_max_steps) break;
     }
-    for (int i = 0; i < n; ++i) {
-        step(f);
-        f *= T(0.25);
-    }
-    return rest > lo ? quiet_nan<T>() : f;  // cannot converge within the cap: NaN, never garbage
+    return rest > lower() ? quiet_nan<T>() : f;  // cannot converge within the cap: NaN, never garbage
 }
 
 /// R_F and R_J of one argument triple (the kernels that compute both share their work).
@@ -308,8 +320,10 @@ template <class T> APSE_FUNC T rf_core(T x, T y, T z) noexcept {
     if (x == T(0)) return agm_rf(y, z);
     if (y == T(0)) return agm_rf(x, z);
     if (z == T(0)) return agm_rf(x, y);
-    if (!is_finite(x + y + z))  // the mean would overflow: R_F(v/16) = 4 R_F(v)
-        return T(0.25) * rf_duplication(x * T(0.0625), y * T(0.0625), z * T(0.0625));
+    // The mean, or the step count's q (<= the sum / tolerance, ~30x), would overflow:
+    // R_F(v/64) = 8 R_F(v).
+    if (!is_finite((x + y + z) * (T(1) / rf_tolerance<T>())))
+        return T(0.125) * rf_duplication(x * T(0.015625), y * T(0.015625), z * T(0.015625));
     return rf_duplication(x, y, z);
 }
 
@@ -441,7 +455,8 @@ template <class T> APSE_FUNC APSE_NOINLINE T rd_core(T x, T y, T z) noexcept {
     // R_D(0, y, z) = R_J(0, y, z, z): complete, by the AGM (via rj_core, which scales).
     if (x == T(0) || y == T(0)) return rj_core(x, y, z, z).rj;
     T scale = T(1);
-    if (!is_finite(x + y + T(3) * z)) {  // the sum overflows: R_D(v/16) = 64 R_D(v)
+    // The sum, or q below (<= the sum / tolerance), would overflow: R_D(v/16) = 64 R_D(v).
+    if (!is_finite((x + y + T(3) * z) * (T(1) / rj_tolerance<T>()))) {
         x *= T(0.0625), y *= T(0.0625), z *= T(0.0625);
         scale = T(1) / T(64);
     }
