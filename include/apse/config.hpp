@@ -11,15 +11,9 @@
 
 // C++17 is required (if constexpr, inline variables, hex float literals). MSVC reports
 // __cplusplus as 199711L unless /Zc:__cplusplus is given; _MSVC_LANG holds the real value.
-#if defined(_MSVC_LANG)
-#define APSE_CPLUSPLUS _MSVC_LANG
-#else
-#define APSE_CPLUSPLUS __cplusplus
-#endif
-#if APSE_CPLUSPLUS < 201703L
+#if (defined(_MSVC_LANG) && _MSVC_LANG < 201703L) || (!defined(_MSVC_LANG) && __cplusplus < 201703L)
 #error "apse requires C++17 or later (compile with -std=c++17, or /std:c++17 for MSVC)"
 #endif
-#undef APSE_CPLUSPLUS
 
 /// Major version (the CMake package reads the three version macros from this file).
 #define APSE_VERSION_MAJOR 0
