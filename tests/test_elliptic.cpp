@@ -217,7 +217,7 @@ TEMPLATE_TEST_CASE("elliptic: outside the domain the result is NaN", "[elliptic]
     CHECK(is_nan(apse::comp_ellint_pi(nan, T(0.5))));
 }
 
-TEST_CASE("elliptic: widely spread arguments (ratios up to 1e300) stay accurate", "[elliptic][robust]") {
+TEST_CASE("elliptic: widely spread arguments (up to the whole exponent range) stay accurate", "[elliptic][robust]") {
     // Arguments whose ratio exceeds ~4^16 once needed more duplication steps than the count made
     // from the smallest argument allowed (NaN), and huge |n|, |m| overflowed an intermediate
     // product in Pi (inf). References: mpmath 1.3 elliprf/elliprd/elliprj/ellipf/ellippi at 40
@@ -243,6 +243,15 @@ TEST_CASE("elliptic: widely spread arguments (ratios up to 1e300) stay accurate"
     CHECK(rel_error(apse::ellint_f(1.0, -1.7976931348623157e308), 2.6527309327542929806e-152) <= 8 * e);
     CHECK(rel_error(apse::ellint_pi(-1e200, 1.0, -1e200), 1.0000000000000000151e-100) <= 16 * e);
     CHECK(rel_error(apse::comp_ellint_pi(-1e200, -1e200), 1.0000000000000000151e-100) <= 16 * e);
+    // The whole exponent range: scaling must not push the small arguments into the subnormals.
+    const double big = std::numeric_limits<double>::max();
+    CHECK(rel_error(apse::carlson_rj(0.0, big, 1.0, 1.0), 2.2375022193600621472e-154) <= 8 * e);
+    CHECK(rel_error(apse::carlson_rd(big, 4.0, 1.7014118346046923e38), 1.3150856094050418967e-192) <= 8 * e);
+    CHECK(rel_error(apse::comp_ellint_pi(-big, -big), 7.4583407312002071573e-155) <= 16 * e);
+    CHECK(rel_error(apse::ellint_pi(-big, 1.0, -big), 7.4583407312002071573e-155) <= 16 * e);
+    // -0 is a valid zero argument: R_C(0, 2) = pi / (2 sqrt 2).
+    CHECK(rel_error(apse::carlson_rc(-0.0, 2.0), 1.1107207345395915618) <= 4 * e);
+    CHECK(rel_error(double(apse::carlson_rc(-0.0f, 2.0f)), 1.1107207345395915618) <= 4 * eps<float>());
     // float: the exact float inputs 1e38f = 9.9999996802856924651e37, 1e30f = 1.0000000150474662199e30,
     // -3e38f = -3.0000000054977557578e38, -1e30f
     const float ef = eps<float>();

@@ -59,7 +59,7 @@ template <class T> APSE_FUNC T rj_impl(T x, T y, T z, T p) noexcept {
 
 template <class T> APSE_FUNC T rc_impl(T x, T y) noexcept {
     if (!(x >= T(0) && y > T(0) && is_finite(max_of(x, y)))) return quiet_nan<T>();
-    return rc_core(x, y);
+    return rc_core(std::fabs(x), y);  // fabs: -0 counts as 0 (d / -0 would be -inf)
 }
 
 /// sin and cos of phi reduced to [-pi/2, pi/2] by whole periods: phi = phi_r + j pi, returns
@@ -112,7 +112,7 @@ template <class T> APSE_FUNC T comp_pi_valid(T n, T m) noexcept {
     // (DLMF 19.21.12 with (p-0)(q-0) = (1-m); all terms positive).
     const T np = T(1) + nn;
     const RfRj<T> r = rj_core<T, true>(T(0), mc, T(1), mc / np);
-    return (r.rf + nn * (mc / (T(3) * np)) * r.rj) / np;
+    return (r.rf + nn * ((mc / np) * (T(1) / T(3)) * r.rj)) / np;
 }
 
 template <class T> APSE_FUNC T comp_pi_impl(T n, T m) noexcept {
@@ -153,7 +153,7 @@ template <class T> APSE_FUNC T pi_impl(T n, T phi, T m) noexcept {
         const T nn = -n, np = T(1) + nn, mc = T(1) - m;
         const T p = c2 + np * s2, q = c2 + mc * s2 / np;
         const RfRj<T> r = rj_core<T, true>(c2, y, T(1), q);
-        v = (s * r.rf + nn * s * c * rc_core(y / p, q) / std::sqrt(p) + nn * (mc / (T(3) * np)) * s3 * r.rj) / np;
+        v = (s * r.rf + nn * s * c * rc_core(y / p, q) / std::sqrt(p) + nn * ((mc / np) * (T(1) / T(3)) * s3 * r.rj)) / np;
     }
     if (a.j != T(0)) v += T(2) * a.j * comp_pi_valid(n, m);
     return v;

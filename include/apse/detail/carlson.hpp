@@ -404,7 +404,12 @@ APSE_FUNC RfRj<T> rj_scaled(T x, T y, T z, T p) noexcept {
     if (mx <= hi && mx >= lo) return rj_dispatch<T, WithRf>(x, y, z, p);
     int ex = 0;
     (void)std::frexp(mx, &ex);
-    const int k = ex / 2;  // scale by 4^-k: the largest argument lands in [1/4, 4)
+    // Scale by 4^-k. Small arguments: the largest lands in [1/4, 4). Large ones: the largest
+    // lands in [2^(e-2), 2^e), e = 24 (float) / 256 (double), inside the unscaled range, so that
+    // the other arguments keep as much of the exponent range as possible (landing the largest
+    // at 1 pushed arguments ~1e-308 of it into the subnormals and the scaled R_J to overflow).
+    constexpr int top_exponent = sizeof(T) == sizeof(float) ? 24 : 256;
+    const int k = mx > hi ? (ex - top_exponent) / 2 : ex / 2;
     const T s = std::ldexp(T(1), -2 * k);
     RfRj<T> r = rj_dispatch<T, WithRf>(x * s, y * s, z * s, p * s);
     r.rj = std::ldexp(r.rj, -3 * k);
@@ -455,10 +460,11 @@ template <class T> APSE_FUNC APSE_NOINLINE T rd_core(T x, T y, T z) noexcept {
     // R_D(0, y, z) = R_J(0, y, z, z): complete, by the AGM (via rj_core, which scales).
     if (x == T(0) || y == T(0)) return rj_core(x, y, z, z).rj;
     T scale = T(1);
-    // The sum, or q below (<= the sum / tolerance), would overflow: R_D(v/16) = 64 R_D(v).
+    // The sum, or q below (<= the sum / tolerance, up to ~37x), would overflow:
+    // R_D(v/64) = 512 R_D(v).
     if (!is_finite((x + y + T(3) * z) * (T(1) / rj_tolerance<T>()))) {
-        x *= T(0.0625), y *= T(0.0625), z *= T(0.0625);
-        scale = T(1) / T(64);
+        x *= T(0.015625), y *= T(0.015625), z *= T(0.015625);
+        scale = T(1) / T(512);
     }
     const T a0 = (x + y + T(3) * z) * T(0.2);
     const T dx = a0 - x, dy = a0 - y;
