@@ -163,7 +163,7 @@ def check_unbiased(plugin_dir):
             tol = Z * np.sqrt(m.var(ddof=1) / K + ref.var(ddof=1) / K_REF)
             good = abs(diff) <= tol
             ok &= bool(good)
-            log("unbiased %-7s %-7s %-13s %-19s mean %.6f ref %.6f diff %+.2e tol %.2e (rel %.2f %%, "
+            log("unbiased %-7s %-7s %-13s %-26s mean %.6f ref %.6f diff %+.2e tol %.2e (rel %.2f %%, "
                 "|diff| = %.1f sigma) %s" % (name, integrator, ("2-sided" if twosided else "1-sided") + ("/alone" if standalone else "")
                                              + ("/ellipse" if aspect != 1.0 else ""), light,
                                              m.mean(), ref.mean(), diff, tol, 100 * tol / ref.mean(),
@@ -189,7 +189,7 @@ def check_relmse(plugin_dir):
         e = rel_mse(np.array(mi.render(mi.load_dict(scenes.scene_dict("plane", light, w, h, 16, **kw)))), ref)
         good = e <= 0.3 * base
         ok &= good
-        log("relmse  %-19s %.3e = %.3f x mitsuba (limit 0.3) %s" % (light, e, e / base, "ok" if good else "FAIL"))
+        log("relmse  %-26s %.3e = %.3f x mitsuba (limit 0.3) %s" % (light, e, e / base, "ok" if good else "FAIL"))
     return ok
 
 

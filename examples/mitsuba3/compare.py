@@ -28,7 +28,8 @@ sys.path.insert(0, HERE)
 import scenes  # noqa: E402
 
 LABELS = {"mitsuba": "Mitsuba area", "area": "apse_disk area", "radial": "radial",
-          "ld_radial": "LD-radial", "parallel": "parallel", "tabulated_ld_radial": "tabulated LD-radial"}
+          "ld_radial": "LD-radial", "parallel": "parallel", "tabulated_ld_radial": "tabulated LD-radial",
+          "cosine_ld_radial": "cosine LD-radial", "cosine_tabulated_ld_radial": "cosine tabulated LD-radial"}
 
 
 def rel_mse(img, ref):
