@@ -127,6 +127,55 @@ def image_means(mi, scene, spp, seeds):
     return np.array([np.array(mi.render(scene, spp=spp, seed=s)).mean() for s in seeds])
 
 
+def check_pdf(mi, scenes):
+    """pdf_direction is the density sample_direction draws from, called as the integrators call
+    it: sample_direction with a SurfaceInteraction3f, pdf_direction with a plain Interaction3f
+    holding only p and n (what `path` keeps of the previous vertex for MIS). For every apse
+    sampler, 200 seeded receivers around the plane scene's two-sided light (disk and ellipse of
+    aspect 0.4) with random unit normals (every tenth zero, as in a medium) and 8 samples each:
+    (1) |pdf_direction - ds.pdf| <= 1e-4 ds.pdf (the maps' float pdf(sample) agree to 1.4e-5 in
+    apse's own tests; a sampler whose pdf_direction used another density, e.g. the plain map's for
+    a cosine-weighted sample, is off by O(1)); (2) pdf_direction > 0 for every direction the plain
+    LD-radial map samples, i.e. over the whole light (a cosine-weighted sampler whose receiver
+    normal pointed away from the light would give 0 there: a biased estimator)."""
+    import numpy as np
+    ok = True
+    for aspect in (1.0, 0.4):
+        def emitter(light):
+            sc = mi.load_dict(scenes.scene_dict("plane", light, 8, 8, 1, twosided=True, aspect=aspect))
+            return list(sc.emitters())[0]
+        plain = emitter("ld_radial")
+        for light in scenes.APSE_SAMPLERS:
+            em = emitter(light)
+            rng = np.random.default_rng(5)
+            worst, zero, pairs = 0.0, 0, 0
+            for k in range(200):
+                p = rng.uniform([-3, 0, -3], [3, 3, 3])
+                n = rng.normal(size=3)
+                n = np.zeros(3) if k % 10 == 0 else n / np.linalg.norm(n)
+                si = mi.SurfaceInteraction3f()
+                it = mi.Interaction3f()
+                si.p = it.p = mi.Point3f(p)
+                si.n = it.n = mi.Normal3f(n)
+                for _ in range(8):
+                    u = mi.Point2f(rng.uniform(), rng.uniform())
+                    ds, _w = em.sample_direction(si, u, True)
+                    q = em.pdf_direction(it, ds, True)
+                    if ds.pdf > 0:
+                        pairs += 1
+                        worst = max(worst, abs(q - ds.pdf) / ds.pdf)
+                    elif q != 0:
+                        worst = float("inf")
+                    dp, _w = plain.sample_direction(si, u, True)
+                    zero += int(dp.pdf > 0 and not em.pdf_direction(it, dp, True) > 0)
+            good = worst <= 1e-4 and zero == 0 and pairs > 0
+            ok &= good
+            log("pdf      %-7s %-26s %4d samples: max |pdf_direction/pdf - 1| %.1e, zero density over the "
+                "light %d %s" % ("disk" if aspect == 1.0 else "ellipse", light, pairs, worst, zero,
+                                 "ok" if good else "FAIL"))
+    return ok
+
+
 def check_unbiased(plugin_dir):
     """Each sampler's mean over K = 16 independent renders (seeds) at 16 spp against the mean of
     Mitsuba's own light over K_REF = 64 renders at the same 16 spp (the same sample count, because
@@ -144,7 +193,7 @@ def check_unbiased(plugin_dir):
     import numpy as np
     mi, scenes = load(plugin_dir)
     K, K_REF, Z = 16, 64, 5.0
-    ok = True
+    ok = check_pdf(mi, scenes)
     # (scene, integrator, two-sided, standalone, aspect): the standalone light is placed by
     # center/normal/radius (its samples are flagged delta: no MIS), the others attached to the
     # disk; aspect 0.4 squeezes the disk into an ellipse (sampled through project_ellipse)
