@@ -10,8 +10,10 @@ then runs one check inside the venv:
   identity : apse_disk with sampler=area renders bit-identical images to Mitsuba's own disk +
              area light (direct and path on the ground and spheres scenes, volpath in the medium);
              this also proves the build flags match the wheel.
-  unbiased : every apse sampler's image mean equals the mean of Mitsuba's own light, within a
-             tolerance derived from the measured noise (see check_unbiased).
+  unbiased : pdf_direction is the density sample_direction draws from and is positive over the
+             whole light (check_pdf); then every apse sampler's image mean equals the mean of
+             Mitsuba's own light, within a tolerance derived from the measured noise
+             (check_unbiased).
   relmse   : at 16 spp of the `stratified` sampler, every apse sampler's relMSE against a
              high-spp reference is <= 0.3x that of Mitsuba's own light on the ground scene.
 
@@ -185,9 +187,9 @@ def check_unbiased(plugin_dir):
     silhouettes does not swamp the light-sampling noise. With s the standard deviations of the
     per-seed image means, the tolerance is Z * sqrt(s_apse^2/K + s_ref^2/K_REF): the standard
     error of the difference, estimated from the renders themselves. Z = 5: with 15 degrees of
-    freedom a Student-t exceeds 5 with probability 1.6e-4, so the 35 comparisons below fail by
-    chance with probability < 0.6 % -- and never intermittently, since the seeds are fixed and
-    Mitsuba's scalar renders are deterministic. The tolerances come out at 0.5-2.5 % of the image
+    freedom a Student-t exceeds 5 with probability 1.6e-4, so the 49 comparisons below fail by
+    chance with probability < 0.8 % -- and never intermittently, since the seeds are fixed and
+    Mitsuba's scalar renders are deterministic. The tolerances come out at 0.3-3.3 % of the image
     means (printed as "rel"): a pdf_direction that is not the density sampled from, or a wrong
     MIS weight, biases the mean by more than that."""
     import numpy as np
@@ -222,7 +224,7 @@ def check_unbiased(plugin_dir):
 
 def check_relmse(plugin_dir):
     """relMSE at 16 spp (`stratified`) of each apse sampler <= 0.3x Mitsuba's own light, on the
-    ground scene (one-sided light, `direct`), against Mitsuba's own light at 4096 spp (so the
+    ground scene (one-sided light, `direct`), against Mitsuba's own light at 1024 spp (so the
     reference owes nothing to apse; its own noise only adds the same constant to both relMSEs,
     which moves the ratio towards 1, against the test)."""
     import numpy as np
