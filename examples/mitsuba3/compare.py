@@ -97,7 +97,7 @@ def main():
             scene = load(light, a.spp)
             img, t = timed_render(scene, a.spp, 0, a.repeats)
             rows[light] = {"spp_img": img, "t": t, "e": rel_mse(img, ref), "scene": scene}
-            progress("%-7s %-20s %4d spp: %6.3f s, relMSE %.3e" % (name, LABELS[light], a.spp, t, rows[light]["e"]))
+            progress("%-7s %-26s %4d spp: %6.3f s, relMSE %.3e" % (name, LABELS[light], a.spp, t, rows[light]["e"]))
         # equal time: Mitsuba's light at --time-spp, the others at the square sample count whose
         # time (from the per-sample cost measured above) comes nearest to that
         budget = rows["mitsuba"]["t"] * a.time_spp / a.spp
@@ -105,7 +105,7 @@ def main():
             spp = nearest_square(budget / (rows[light]["t"] / a.spp))
             img, t = timed_render(rows[light]["scene"], spp, 0, a.repeats)
             rows[light].update(time_img=img, time_spp=spp, time_t=t, time_e=rel_mse(img, ref))
-            progress("%-7s %-20s %4d spp (equal time): %6.3f s, relMSE %.3e" % (name, LABELS[light], spp, t,
+            progress("%-7s %-26s %4d spp (equal time): %6.3f s, relMSE %.3e" % (name, LABELS[light], spp, t,
                                                                               rows[light]["time_e"]))
 
         # pictures: reference, then every light; top row equal samples, bottom row equal time.
