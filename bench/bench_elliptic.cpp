@@ -60,7 +60,7 @@ template <class T> Inputs<T> make_inputs(Kind kind) {
                 a = {T(logu(1e-2, 1e2)), T(logu(1e-2, 1e2)), T(logu(1e-2, 1e2)), T(logu(1e-2, 1e2))};
                 break;
             case Kind::rj_solid_angle: {
-                // Omega = 4/3 tan a tan b R_J(0, 1 + tan^2 b, 1 + tan^2 a, 1) (MATH.md §3):
+                // Omega = 4/3 tan a tan b R_J(0, 1 + tan^2 b, 1 + tan^2 a, 1) (docs/math.md §3):
                 // tan a from far-away (1e-3) to wide (1e2) ellipses, tan b <= tan a.
                 const double ta = logu(1e-3, 1e2), tb = ta * (0.02 + 0.98 * u(rng));
                 a = {T(0), T(1 + tb * tb), T(1 + ta * ta), T(1)};
@@ -71,7 +71,7 @@ template <class T> Inputs<T> make_inputs(Kind kind) {
                 a = {T(1.5707963 * u(rng)), T(0.999 * u(rng)), T(0), T(0)};
                 break;
             case Kind::pi: {
-                // Half the parallel map's Pi(-tan^2 b; theta | m) (MATH.md §5), half n in [0, 1).
+                // Half the parallel map's Pi(-tan^2 b; theta | m) (docs/math.md §5), half n in [0, 1).
                 const double ta = logu(1e-2, 1e2), tb = ta * (0.02 + 0.98 * u(rng));
                 const double m = (ta * ta - tb * tb) / (1 + ta * ta);
                 const double n = u(rng) < 0.5 ? -tb * tb : 0.95 * u(rng);

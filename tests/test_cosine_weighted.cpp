@@ -16,6 +16,7 @@
 #include <type_traits>
 #include <vector>
 
+#include "support/default_table.hpp"
 #include "support/map_testing.hpp"
 #include "support/statistics.hpp"
 
@@ -49,15 +50,7 @@ template <class T> apse::SphericalEllipse<T> light_ellipse(const Config& c) {
     return apse::project_ellipse(o, centre, glm::vec<3, T>(T(c.ra), T(0), T(0)), glm::vec<3, T>(T(0), T(c.rb), T(0)));
 }
 
-const apse::TabulationView& table_view() {
-    static apse::TabulationTable* t = [] {
-        auto* p = new apse::TabulationTable;
-        p->build();
-        return p;
-    }();
-    static const apse::TabulationView v = t->view();
-    return v;
-}
+apse::TabulationView table_view() { return apse_test::default_table().view(); }
 
 template <class Map> Map make_map(const apse::SphericalEllipse<typename Map::vec3::value_type>& e) {
     using T = typename Map::vec3::value_type;

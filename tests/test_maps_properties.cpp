@@ -184,7 +184,7 @@ TEMPLATE_TEST_CASE("the square's boundary maps onto the ellipse's boundary, and 
                 CHECK(boundary_error(ld.sample(u).direction) <= 1);
             for (const Vec2<T> u : {Vec2<T>(t, T(0)), Vec2<T>(t, T(1)), Vec2<T>(T(0), t), Vec2<T>(T(1), t)})
                 CHECK(boundary_error(parallel.sample(u).direction) <= 1);
-            // seams (MATH.md §4): radial u1 = 0 and u1 = 1 meet on the +x axis; u2 = 0 is the centre
+            // seams (docs/math.md §4): radial u1 = 0 and u1 = 1 meet on the +x axis; u2 = 0 is the centre
             const Vec3<T> a = radial.sample(Vec2<T>(T(0), t)).direction, b = radial.sample(Vec2<T>(T(1), t)).direction;
             CHECK(angle(a, b) <= 8 * eps * (1 + std::fabs(double(a.x))));
             CHECK(std::fabs(double(a.y)) <= 8 * eps);
@@ -228,7 +228,7 @@ TEMPLATE_TEST_CASE("LD-radial is continuous on the whole square", "[maps][contin
 
 TEMPLATE_TEST_CASE("samples hit the projected disk", "[maps][disk]", float, double) {
     using T = TestType;
-    // Disks (o = 0, centre (h, 0, -d), normal +z, radius 1) from MATH.md §10 and harder ones. A
+    // Disks (o = 0, centre (h, 0, -d), normal +z, radius 1) from docs/math.md §10 and harder ones. A
     // sample hits the disk if the ray meets the plane within |p - c| <= 1 + tol. The projection
     // loses ~log10(distance/d) digits near grazing (projection.hpp), and a direction error of eps
     // moves the hit point by ~eps |c|: tol = 16 eps (1 + |c|/d) (1 + |c|).
@@ -261,7 +261,7 @@ TEMPLATE_TEST_CASE("samples hit the projected disk", "[maps][disk]", float, doub
 TEMPLATE_TEST_CASE("degenerate and bad input: pdf 0 or a valid direction, never NaN", "[maps][robust]", float, double) {
     using T = TestType;
     const T nan = std::numeric_limits<T>::quiet_NaN(), inf = std::numeric_limits<T>::infinity();
-    auto finite3 = [](const Vec3<T>& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); };
+    auto finite3 = [](const Vec3<T>& v) { return apse::is_finite(v.x) && apse::is_finite(v.y) && apse::is_finite(v.z); };
     // empty ellipse
     const auto empty = apse::SphericalEllipse<T>::make_empty();
     for_each_map(empty, [&](const std::string& name, const auto& map) {
@@ -271,7 +271,7 @@ TEMPLATE_TEST_CASE("degenerate and bad input: pdf 0 or a valid direction, never 
         CHECK(finite3(s.direction));
         CHECK(map.pdf(Vec3<T>(0, 0, 1)) == T(0));
         const Vec2<T> u = map.invert(Vec3<T>(0, 0, 1));
-        CHECK((std::isfinite(u.x) && std::isfinite(u.y)));
+        CHECK((apse::is_finite(u.x) && apse::is_finite(u.y)));
         CHECK(map.solid_angle() == T(0));
     });
     // bad u on a good ellipse; bad directions
@@ -294,7 +294,7 @@ TEMPLATE_TEST_CASE("degenerate and bad input: pdf 0 or a valid direction, never 
         for (const Vec3<T> w : {Vec3<T>(0), Vec3<T>(nan, 0, 1), Vec3<T>(inf, 0, 1), Vec3<T>(0, 0, -1), Vec3<T>(1, 0, 0)}) {
             const Vec2<T> u = map.invert(w);
             CHECK((u.x >= T(0) && u.x <= T(1) && u.y >= T(0) && u.y <= T(1)));
-            CHECK(std::isfinite(map.pdf(w)));
+            CHECK(apse::is_finite(map.pdf(w)));
         }
         CHECK(map.pdf(Vec3<T>(0, 0, 1)) == inv);
         CHECK(map.pdf(Vec3<T>(0, 0, -1)) == T(0));
@@ -312,7 +312,7 @@ TEMPLATE_TEST_CASE("degenerate and bad input: pdf 0 or a valid direction, never 
                         const auto s = map.sample(Vec2<T>(T(i / 8.0), T(j / 8.0)), it);
                         INFO(name << " tan alpha " << ta << " tan beta " << tb << " u " << i / 8.0 << " " << j / 8.0);
                         CHECK(finite3(s.direction));
-                        CHECK(std::isfinite(s.pdf));
+                        CHECK(apse::is_finite(s.pdf));
                         CHECK(s.pdf >= T(0));
                         CHECK(it <= 12);
                         if (s.pdf > 0) CHECK(std::fabs(glm::length(glm::dvec3(s.direction)) - 1) <= 1e-5);

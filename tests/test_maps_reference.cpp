@@ -37,7 +37,7 @@ template <class T> apse::SphericalEllipse<T> make_ellipse(double ta, double tb) 
     return apse::SphericalEllipse<T>::from_tangents(V(1, 0, 0), V(0, 1, 0), V(0, 0, 1), T(ta), T(tb));
 }
 
-// ---- independent long-double quadrature of the cumulative areas (MATH.md §4, §5 definitions) --
+// ---- independent long-double quadrature of the cumulative areas (docs/math.md §4, §5 definitions) --
 using LD = long double;
 const LD kPi = 3.141592653589793238462643383279502884L;
 
@@ -179,7 +179,7 @@ TEMPLATE_TEST_CASE("sampled directions match the references", "[maps][reference]
 
 TEMPLATE_TEST_CASE("inversion: CDF error and iteration statistics", "[maps][reference]", float, double) {
     using T = TestType;
-    // Goals (issue 4): CDF error <= 1e-12 relative in double, <= 1e-5 in float; mean <= 3 and
+    // Goals: CDF error <= 1e-12 relative in double, <= 1e-5 in float; mean <= 3 and
     // max <= 6 iterations over the test configurations (the reference ellipses: tiny, thin,
     // large, nearly hemispherical). The error is measured by the long-double quadrature above
     // (validated to 1e-15) at the state the solver returns, so it includes the rounding of that

@@ -21,6 +21,27 @@ TEMPLATE_TEST_CASE("constants and predicates", "[math]", float, double) {
     CHECK(apse::is_finite(std::numeric_limits<T>::denorm_min()));
 }
 
+TEMPLATE_TEST_CASE("NaN and infinity predicates read bits: they hold under -ffast-math", "[math][robust]", float, double) {
+    using T = TestType;
+    // Through volatile so the compiler cannot fold them: with -ffinite-math-only, `x != x` and
+    // std::isnan(x) become false and std::isfinite(x) true whatever x holds at run time.
+    const volatile T nan = std::numeric_limits<T>::quiet_NaN(), neg_nan = -std::numeric_limits<T>::quiet_NaN();
+    const volatile T inf = std::numeric_limits<T>::infinity(), big = std::numeric_limits<T>::max();
+    const volatile T tiny = std::numeric_limits<T>::denorm_min(), zero = T(0);
+    CHECK(apse::is_nan(T(nan)));
+    CHECK(apse::is_nan(T(neg_nan)));
+    CHECK_FALSE(apse::is_finite(T(nan)));
+    CHECK_FALSE(apse::is_nan(T(inf)));
+    CHECK_FALSE(apse::is_finite(T(inf)));
+    CHECK_FALSE(apse::is_finite(-T(inf)));
+    CHECK(apse::is_finite(T(big)));
+    CHECK(apse::is_finite(-T(big)));
+    CHECK(apse::is_finite(T(tiny)));
+    CHECK(apse::is_finite(T(zero)));
+    CHECK_FALSE(apse::is_nan(T(zero)));
+    CHECK_FALSE(apse::is_nan(-T(big)));
+}
+
 TEMPLATE_TEST_CASE("guarded functions stay in their domain", "[math]", float, double) {
     using T = TestType;
     CHECK(apse::safe_sqrt(T(-1e-30)) == T(0));

@@ -793,3 +793,23 @@ TEMPLATE_TEST_CASE("degenerate and invalid input", "[projection][robustness]", f
     CHECK(scaled.tan_alpha == front.tan_alpha);
     CHECK(scaled.tan_beta == front.tan_beta);
 }
+
+TEMPLATE_TEST_CASE("project_ellipse: parallel axes give an empty ellipse, FMA contraction or not", "[projection][ellipse][robust]", float, double) {
+    using T = TestType;
+    using V = glm::vec<3, T>;
+    // u × v of equal or proportional axes is exactly 0 without FMA; with a·b − c·d contracted
+    // into fma(a, b, −c·d) (-march=x86-64-v3, found by fuzz_shapes in that build) it is a rounding
+    // residual, which once gave a non-empty ellipse with a garbage frame. Awkward values make the
+    // products inexact, so the residual is non-zero where contraction happens.
+    const V u(T(-0.7), T(1.3), T(0.1)), o(T(0.2), T(-0.4), T(2.9)), c(T(0.3), T(0.1), T(-0.6));
+    for (const T k : {T(1), T(-3.7), T(1e-3), T(1e3)}) {
+        const auto e = apse::project_ellipse(o, c, u, k * u);
+        INFO("k = " << k);
+        CHECK(e.empty());
+        CHECK(e.solid_angle() == T(0));
+    }
+    const T big = std::numeric_limits<T>::max() / 4;
+    CHECK(apse::project_ellipse(V(T(0.9), -big, -big), V(-big), V(-big), V(-big)).empty());
+    // a thin but genuine ellipse (axis angle 1e-3) is not empty
+    CHECK_FALSE(apse::project_ellipse(o, c, u, u + V(T(0), T(0), T(1e-3))).empty());
+}

@@ -109,7 +109,7 @@ template <class T> bool unit_and_finite(const glm::vec<3, T>& v) {
            std::fabs(len - 1.0) <= 8 * double(apse::epsilon<T>());
 }
 
-/// The published solid-angle formula S = g0 + g1 + g2 + g3 − 2 pi (MATH.md §7), evaluated in T:
+/// The published solid-angle formula S = g0 + g1 + g2 + g3 − 2 pi (docs/math.md §7), evaluated in T:
 /// only used to document its cancellation for far rectangles.
 template <class T> T published_solid_angle(const RectCase& c) {
     using V = glm::vec<3, T>;
@@ -357,6 +357,40 @@ TEMPLATE_TEST_CASE("rectangle: two-sided, and defined behaviour on degenerate in
     using V2 = glm::vec<2, T>;
     const T inf = std::numeric_limits<T>::infinity(), nan = apse::quiet_nan<T>();
     const V s(0, 0, 0), ex(1, 0, 0), ey(0, 1, 0);
+
+    // A rectangle 1e37 times longer than o's distance to it (found by fuzz_rectangle): the world
+    // point next to o is the difference of two coordinates ~1e37 and cancels to 0. Such a sample
+    // has no usable direction and must say so with pdf 0, never a pdf > 0 at distance 0.
+    {
+        const V o(-3, -3, 0), c(-3, -3, -3), hx(-2, -3, 1);
+        const V hy(T(-7.291765005448681e+37), T(6.0764708378739022e+37), T(3.6458825027243405e+37));
+        const auto r = apse::SphericalRectangle<T>::from_center(o, c, hx, hy);
+        for (const V2 u : {V2(T(0.80398256498197129), T(1.3823577699190182e-17)), V2(T(0.5), T(0.5)), V2(T(0.1), T(0.9))}) {
+            const auto p = r.sample_point(u);
+            CHECK(apse::is_finite(p.pdf));
+            if (p.pdf > T(0)) {
+                CHECK(p.distance > T(0));
+                CHECK(apse::is_finite(p.distance));
+            }
+        }
+    }
+
+    // Coordinates near the type's maximum (also found by fuzz_rectangle): the point lies ~1.4
+    // DBL_MAX from o, a distance double cannot hold. No sample then (pdf 0), never pdf > 0 with
+    // an infinite distance. (In float the inputs overflow to inf: an empty rectangle.)
+    {
+        const T big = std::numeric_limits<T>::max();
+        const T tiny = T(1e-300);  // 0 in float
+        const apse::SphericalRectangle<T> r(V(0, big, 0), V(T(-3), tiny, big), V(0, 1, 1), V(tiny, 1, 1));
+        for (const V2 u : {V2(T(1), T(0.043941662358302699)), V2(T(0.5), T(0.5)), V2(T(0.9), T(0.1))}) {
+            const auto p = r.sample_point(u);
+            CHECK(apse::is_finite(p.pdf));
+            if (p.pdf > T(0)) {
+                CHECK(apse::is_finite(p.distance));
+                CHECK((apse::is_finite(p.point.x) && apse::is_finite(p.point.y) && apse::is_finite(p.point.z)));
+            }
+        }
+    }
 
     // o mirrored through the plane sees the same solid angle; samples are mirrored
     const apse::SphericalRectangle<T> above(V(0.3, 0.2, 0.5), s, ex, ey), below(V(0.3, 0.2, -0.5), s, ex, ey);

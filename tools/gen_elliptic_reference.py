@@ -319,7 +319,7 @@ def build_tables(r):
         if i % 5 == 4:
             v[i % 2] = 0.0
         t.add(v + [v[2]], 'p_eq_z')
-    for _ in range(30):  # the solid-angle form (MATH.md 3): R_J(0, 1+tan^2 b, 1+tan^2 a, 1)
+    for _ in range(30):  # the solid-angle form (docs/math.md §3): R_J(0, 1+tan^2 b, 1+tan^2 a, 1)
         ta = loguniform(r, 1e-4, 1e3)
         tb = ta * r.uniform(0.0, 1.0)
         tb = max(tb, 1e-4)
@@ -453,13 +453,13 @@ def build_tables(r):
         t.add((param_m(r), 1.0 - 2.0 ** -k), 'm_near_one')
     for _ in range(25):
         t.add((param_m(r), -pos32(r)), 'm_negative')
-    for _ in range(30):  # the Booth solid-angle form (MATH.md 3): m < n < 1
+    for _ in range(30):  # the Booth solid-angle form (docs/math.md §3): m < n < 1
         ta = loguniform(r, 1e-2, 1e2)
         tb = ta * r.uniform(0.01, 1.0)
         n = f32(1.0 - (tb / ta) ** 2)
         m = f32((ta * ta - tb * tb) / (1.0 + ta * ta))
         t.add((n, m), 'solid_angle')
-    for _ in range(30):  # the parallel-map form (MATH.md 3): Pi(-tan^2 b | m)
+    for _ in range(30):  # the parallel-map form (docs/math.md §3): Pi(-tan^2 b | m)
         ta = loguniform(r, 1e-2, 1e2)
         tb = ta * r.uniform(0.01, 1.0)
         m = f32((ta * ta - tb * tb) / (1.0 + ta * ta))

@@ -9,7 +9,7 @@ float and the double tests see the same ellipse. An ellipse is given by its gnom
 tan(alpha) >= tan(beta) (what SphericalEllipse::from_tangents takes). References are computed at
 40 digits and written with 30 significant digits.
 
-Everything is computed from the *definitions* of MATH.md §1, §4, §5 by quadrature, independently
+Everything is computed from the *definitions* of docs/math.md §1, §4, §5 by quadrature, independently
 of the closed forms the library uses:
 
 ellipses.txt       id tan_alpha tan_beta Omega      Omega = 4 * int_0^{pi/2} (1 - cos theta_max(phi)) dphi
@@ -24,7 +24,7 @@ with 1 - cos theta_max(phi) = r^2/(1 + sqrt(1 - r^2)), r = ab/sqrt(a^2 sin^2 phi
 (a = sin alpha, b = sin beta) and x_max(psi) = x_t/sqrt(1 + x_t^2 + tan^2 psi),
 x_t = tan(alpha) sqrt(1 - tan^2 psi / tan^2 beta). The quadrature intervals are split at the
 azimuths where the planar ellipse reaches k/16 of its area (so thin ellipses' narrow peaks are
-resolved). As a cross-check the script also evaluates MATH.md's Carlson forms (R_J total,
+resolved). As a cross-check the script also evaluates the Carlson forms of docs/math.md §3–§5 (R_J total,
 cancellation-free Omega_r, Carlson Omega_p) and asserts agreement to 1e-25 relative.
 """
 
@@ -60,7 +60,7 @@ class Ellipse:
         self.alpha, self.beta = mp.atan(self.ta), mp.atan(self.tb)
         self.a, self.b = mp.sin(self.alpha), mp.sin(self.beta)
 
-    # ---- radial (MATH.md §4) -------------------------------------------------------------
+    # ---- radial (docs/math.md §4) -------------------------------------------------------------
     def wedge(self, phi):
         """1 - cos theta_max(phi): solid angle per unit azimuth."""
         a, b = self.a, self.b
@@ -82,7 +82,7 @@ class Ellipse:
         return 4 * self.omega_r(PI / 2)
 
     def omega_r_carlson(self, phi):
-        """MATH.md §4 cancellation-free form (cross-check only)."""
+        """docs/math.md §4 cancellation-free form (cross-check only)."""
         at, bt, a = self.ta, self.tb, self.a
         m = (at * at - bt * bt) / (1 + at * at)
         c = bt * mp.cos(self.alpha) / at
@@ -99,7 +99,7 @@ class Ellipse:
         at, bt = self.ta, self.tb
         return mp.mpf(4) / 3 * at * bt * mp.elliprj(0, 1 + bt * bt, 1 + at * at, 1)
 
-    # ---- parallel (MATH.md §5) -----------------------------------------------------------
+    # ---- parallel (docs/math.md §5) -----------------------------------------------------------
     def x_max(self, psi):
         yt = mp.tan(psi)
         g = 1 - (yt / self.tb) ** 2
@@ -167,7 +167,7 @@ def parallel_local(E, Om, u1, u2):
 
 
 def concentric(u1, u2):
-    """Shirley–Chiu concentric map in polar form (rho, theta in [0, 2 pi)), MATH.md §4."""
+    """Shirley–Chiu concentric map in polar form (rho, theta in [0, 2 pi)), docs/math.md §4."""
     A, B = 2 * mp.mpf(u1) - 1, 2 * mp.mpf(u2) - 1
     if A == 0 and B == 0:
         return mp.mpf(0), mp.mpf(0)
@@ -194,7 +194,7 @@ def main():
         (t(1.5), t(1.45)), (1.0, 1.0),                      # large, cap of 45 degrees
         (1e4, 9e3), (1e4, t(0.5)), (1e4, t(1e-4 * (hp - 1e-4))),   # nearly hemispherical: fat, mid, very thin
         (t(1.0), 1e-4),                                     # thin
-        (t(0.75424914469804604), t(0.72322066612406759)),  # MATH.md §10 disk d = 1, h = 0.5
+        (t(0.75424914469804604), t(0.72322066612406759)),  # docs/math.md §10 disk d = 1, h = 0.5
     ]
     for i in range(3):                                      # random shapes
         a = rng.uniform(0.01, 1.5)

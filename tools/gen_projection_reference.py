@@ -12,11 +12,11 @@ exactly representable in float32 and written as a hex float (float.hex()), so th
 double tests read the same geometry. Everything is computed from first principles with mpmath at
 60 digits and written with 30 significant digits:
 
-* alpha, beta and the frame of a **disk** by the geometric construction of MATH.md §2 (the two rim
+* alpha, beta and the frame of a **disk** by the geometric construction of docs/math.md §2 (the two rim
   points in the symmetry plane, atan2 angles, the chord through the centre direction), cross-
   checked against the eigen-decomposition of the quadric cone matrix (mp.eigsy);
 * alpha, beta and the frame of an **ellipse** (any two non-parallel semi-diameters U, V) and of an
-  **ellipsoid** from the eigen-decomposition of the cone matrix (MATH.md §2b), cross-checked by
+  **ellipsoid** from the eigen-decomposition of the cone matrix (docs/math.md §2b), cross-checked by
   solving the tangency condition along the computed axes (the boundary's angular distance from
   the cone axis at azimuth 0 and pi/2 must be alpha and beta, and no sampled azimuth may exceed
   alpha or fall below beta); **spheres** by asin(R / D);
@@ -129,7 +129,7 @@ class Ellipse:
 
 
 def cone_ellipse(C, toward):
-    """Spherical ellipse of the cone {v : v^T C v <= 0}, nappe containing `toward` (MATH.md §2b)."""
+    """Spherical ellipse of the cone {v : v^T C v <= 0}, nappe containing `toward` (docs/math.md §2b)."""
     M = mp.matrix(3, 3)
     for i in range(3):
         for j in range(3):
@@ -159,7 +159,7 @@ def rel(a, b):
 
 
 # ------------------------------------------------------------------------------------------------
-# disks: MATH.md §2 geometric construction
+# disks: docs/math.md §2 geometric construction
 # ------------------------------------------------------------------------------------------------
 
 
@@ -533,7 +533,7 @@ def disk_configs(rng):
     def add_cfg(name, o, c, n, r):
         cfgs.append((name, [f32(t) for t in o], [f32(t) for t in c], [f32(t) for t in n], f32(r)))
 
-    # MATH.md §10 table (o = 0, c = (h, 0, -d), n = +z, r = 1)
+    # docs/math.md §10 table (o = 0, c = (h, 0, -d), n = +z, r = 1)
     for d, h in [(1, 0), (1, 0.5), (1, 1), (1, 2), (0.1, 3), (10, 5), (0.001, 0.5), (100, 0)]:
         add_cfg("math10", [0, 0, 0], [h, 0, -d], [0, 0, 1], 1)
     # generic random configurations
@@ -830,7 +830,7 @@ def build_ellipsoids(rng):
 
 def solid_angle_quad(ta, tb):
     """Omega = 4 int_0^{pi/2} (1 - cos theta_max(phi)) dphi with sin theta_max = a b /
-    sqrt(a^2 sin^2 + b^2 cos^2) (a, b = sin alpha, sin beta; MATH.md §1): no elliptic integral."""
+    sqrt(a^2 sin^2 + b^2 cos^2) (a, b = sin alpha, sin beta; docs/math.md §1): no elliptic integral."""
     a = ta / mp.sqrt(1 + ta * ta)
     b = tb / mp.sqrt(1 + tb * tb)
 

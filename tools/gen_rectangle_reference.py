@@ -23,7 +23,7 @@ map.txt           reference points of the Urena-Fajardo-King map u -> direction,
 gamito_disks.txt  disks (o, centre c, normal n (not unit), radius r) -> solid angle of the disk,
                   int over the disk of cos(theta) d(omega) with cos(theta) = omega . z_d (z_d: the
                   plane normal pointing from o towards the plane), and the solid angle of the
-                  bounding square of MATH.md section 7. Disk integrals by quadrature in polar
+                  bounding square of docs/math.md §7. Disk integrals by quadrature in polar
                   coordinates about o's foot point (radial part exact), cos integral checked
                   against the closed-form parallel disk form factor, square against the rectangle
                   quadrature above.
@@ -338,7 +338,7 @@ def disk_integrals(o, c, n, r):
 
 
 def bounding_square(o, c, n, r):
-    """The square of MATH.md section 7: one edge along the symmetry plane (the in-plane direction
+    """The square of docs/math.md §7: one edge along the symmetry plane (the in-plane direction
     from o's foot point to c), side 2r, centred on c. On the axis (h = 0) any orientation gives
     the same solid angle (rotational symmetry), so a fixed perpendicular is used."""
     o, c, n, r, sd, d, foot, h = disk_geometry(o, c, n, r)

@@ -10,8 +10,10 @@ then runs one check inside the venv:
   identity : apse_disk with sampler=area renders bit-identical images to Mitsuba's own disk +
              area light (direct and path on the ground and spheres scenes, volpath in the medium);
              this also proves the build flags match the wheel.
-  unbiased : every apse sampler's image mean equals the mean of Mitsuba's own light, within a
-             tolerance derived from the measured noise (see check_unbiased).
+  unbiased : pdf_direction is the density sample_direction draws from and is positive over the
+             whole light (check_pdf); then every apse sampler's image mean equals the mean of
+             Mitsuba's own light, within a tolerance derived from the measured noise
+             (check_unbiased).
   relmse   : at 16 spp of the `stratified` sampler, every apse sampler's relMSE against a
              high-spp reference is <= 0.3x that of Mitsuba's own light on the ground scene.
 
@@ -127,6 +129,55 @@ def image_means(mi, scene, spp, seeds):
     return np.array([np.array(mi.render(scene, spp=spp, seed=s)).mean() for s in seeds])
 
 
+def check_pdf(mi, scenes):
+    """pdf_direction is the density sample_direction draws from, called as the integrators call
+    it: sample_direction with a SurfaceInteraction3f, pdf_direction with a plain Interaction3f
+    holding only p and n (what `path` keeps of the previous vertex for MIS). For every apse
+    sampler, 200 seeded receivers around the plane scene's two-sided light (disk and ellipse of
+    aspect 0.4) with random unit normals (every tenth zero, as in a medium) and 8 samples each:
+    (1) |pdf_direction - ds.pdf| <= 1e-4 ds.pdf (the maps' float pdf(sample) agree to 1.4e-5 in
+    apse's own tests; a sampler whose pdf_direction used another density, e.g. the plain map's for
+    a cosine-weighted sample, is off by O(1)); (2) pdf_direction > 0 for every direction the plain
+    LD-radial map samples, i.e. over the whole light (a cosine-weighted sampler whose receiver
+    normal pointed away from the light would give 0 there: a biased estimator)."""
+    import numpy as np
+    ok = True
+    for aspect in (1.0, 0.4):
+        def emitter(light):
+            sc = mi.load_dict(scenes.scene_dict("plane", light, 8, 8, 1, twosided=True, aspect=aspect))
+            return list(sc.emitters())[0]
+        plain = emitter("ld_radial")
+        for light in scenes.APSE_SAMPLERS:
+            em = emitter(light)
+            rng = np.random.default_rng(5)
+            worst, zero, pairs = 0.0, 0, 0
+            for k in range(200):
+                p = rng.uniform([-3, 0, -3], [3, 3, 3])
+                n = rng.normal(size=3)
+                n = np.zeros(3) if k % 10 == 0 else n / np.linalg.norm(n)
+                si = mi.SurfaceInteraction3f()
+                it = mi.Interaction3f()
+                si.p = it.p = mi.Point3f(p)
+                si.n = it.n = mi.Normal3f(n)
+                for _ in range(8):
+                    u = mi.Point2f(rng.uniform(), rng.uniform())
+                    ds, _w = em.sample_direction(si, u, True)
+                    q = em.pdf_direction(it, ds, True)
+                    if ds.pdf > 0:
+                        pairs += 1
+                        worst = max(worst, abs(q - ds.pdf) / ds.pdf)
+                    elif q != 0:
+                        worst = float("inf")
+                    dp, _w = plain.sample_direction(si, u, True)
+                    zero += int(dp.pdf > 0 and not em.pdf_direction(it, dp, True) > 0)
+            good = worst <= 1e-4 and zero == 0 and pairs > 0
+            ok &= good
+            log("pdf      %-7s %-26s %4d samples: max |pdf_direction/pdf - 1| %.1e, zero density over the "
+                "light %d %s" % ("disk" if aspect == 1.0 else "ellipse", light, pairs, worst, zero,
+                                 "ok" if good else "FAIL"))
+    return ok
+
+
 def check_unbiased(plugin_dir):
     """Each sampler's mean over K = 16 independent renders (seeds) at 16 spp against the mean of
     Mitsuba's own light over K_REF = 64 renders at the same 16 spp (the same sample count, because
@@ -136,15 +187,15 @@ def check_unbiased(plugin_dir):
     silhouettes does not swamp the light-sampling noise. With s the standard deviations of the
     per-seed image means, the tolerance is Z * sqrt(s_apse^2/K + s_ref^2/K_REF): the standard
     error of the difference, estimated from the renders themselves. Z = 5: with 15 degrees of
-    freedom a Student-t exceeds 5 with probability 1.6e-4, so the 35 comparisons below fail by
-    chance with probability < 0.6 % -- and never intermittently, since the seeds are fixed and
-    Mitsuba's scalar renders are deterministic. The tolerances come out at 0.5-2.5 % of the image
+    freedom a Student-t exceeds 5 with probability 1.6e-4, so the 49 comparisons below fail by
+    chance with probability < 0.8 % -- and never intermittently, since the seeds are fixed and
+    Mitsuba's scalar renders are deterministic. The tolerances come out at 0.3-3.3 % of the image
     means (printed as "rel"): a pdf_direction that is not the density sampled from, or a wrong
     MIS weight, biases the mean by more than that."""
     import numpy as np
     mi, scenes = load(plugin_dir)
     K, K_REF, Z = 16, 64, 5.0
-    ok = True
+    ok = check_pdf(mi, scenes)
     # (scene, integrator, two-sided, standalone, aspect): the standalone light is placed by
     # center/normal/radius (its samples are flagged delta: no MIS), the others attached to the
     # disk; aspect 0.4 squeezes the disk into an ellipse (sampled through project_ellipse)
@@ -163,7 +214,7 @@ def check_unbiased(plugin_dir):
             tol = Z * np.sqrt(m.var(ddof=1) / K + ref.var(ddof=1) / K_REF)
             good = abs(diff) <= tol
             ok &= bool(good)
-            log("unbiased %-7s %-7s %-13s %-19s mean %.6f ref %.6f diff %+.2e tol %.2e (rel %.2f %%, "
+            log("unbiased %-7s %-7s %-13s %-26s mean %.6f ref %.6f diff %+.2e tol %.2e (rel %.2f %%, "
                 "|diff| = %.1f sigma) %s" % (name, integrator, ("2-sided" if twosided else "1-sided") + ("/alone" if standalone else "")
                                              + ("/ellipse" if aspect != 1.0 else ""), light,
                                              m.mean(), ref.mean(), diff, tol, 100 * tol / ref.mean(),
@@ -173,7 +224,7 @@ def check_unbiased(plugin_dir):
 
 def check_relmse(plugin_dir):
     """relMSE at 16 spp (`stratified`) of each apse sampler <= 0.3x Mitsuba's own light, on the
-    ground scene (one-sided light, `direct`), against Mitsuba's own light at 4096 spp (so the
+    ground scene (one-sided light, `direct`), against Mitsuba's own light at 1024 spp (so the
     reference owes nothing to apse; its own noise only adds the same constant to both relMSEs,
     which moves the ratio towards 1, against the test)."""
     import numpy as np
@@ -189,7 +240,7 @@ def check_relmse(plugin_dir):
         e = rel_mse(np.array(mi.render(mi.load_dict(scenes.scene_dict("plane", light, w, h, 16, **kw)))), ref)
         good = e <= 0.3 * base
         ok &= good
-        log("relmse  %-19s %.3e = %.3f x mitsuba (limit 0.3) %s" % (light, e, e / base, "ok" if good else "FAIL"))
+        log("relmse  %-26s %.3e = %.3f x mitsuba (limit 0.3) %s" % (light, e, e / base, "ok" if good else "FAIL"))
     return ok
 
 

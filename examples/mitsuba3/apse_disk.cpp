@@ -15,7 +15,9 @@
 //     samples that could never find the light.
 // Parameters: radiance (rgb; spatially varying textures are refused), twosided (bool, default
 // false: emits towards +normal only, as Mitsuba's `area`), sampler (area | radial | ld_radial |
-// parallel | tabulated_ld_radial; default ld_radial).
+// parallel | tabulated_ld_radial | cosine_ld_radial | cosine_tabulated_ld_radial; default
+// ld_radial). The cosine_* samplers weight the map by the receiver's cosine
+// (apse::CosineWeighted, with the receiver's geometric normal: see receiver_normal).
 // `sampler: area` attached to a disk calls the shape's own sampling exactly as Mitsuba's `area`
 // emitter does, so it renders the same image bit for bit; standalone it uses apse's
 // DiskAreaSampler.
@@ -38,7 +40,9 @@
 NAMESPACE_BEGIN(mitsuba)
 
 /// How the plugin samples directions towards the light.
-enum class ApseDiskSampler { area, radial, ld_radial, parallel, tabulated_ld_radial };
+enum class ApseDiskSampler {
+    area, radial, ld_radial, parallel, tabulated_ld_radial, cosine_ld_radial, cosine_tabulated_ld_radial
+};
 
 namespace apse_disk_detail {
 
@@ -51,8 +55,10 @@ inline ApseDiskSampler parse_sampler(const std::string &name) {
     if (name == "ld_radial") return ApseDiskSampler::ld_radial;
     if (name == "parallel") return ApseDiskSampler::parallel;
     if (name == "tabulated_ld_radial") return ApseDiskSampler::tabulated_ld_radial;
+    if (name == "cosine_ld_radial") return ApseDiskSampler::cosine_ld_radial;
+    if (name == "cosine_tabulated_ld_radial") return ApseDiskSampler::cosine_tabulated_ld_radial;
     Throw("apse_disk: unknown sampler \"%s\" (area, radial, ld_radial, parallel, "
-          "tabulated_ld_radial)", name);
+          "tabulated_ld_radial, cosine_ld_radial, cosine_tabulated_ld_radial)", name);
 }
 
 /// The tabulation table of the tabulated maps, built once per process (~15 ms, 77 KB).
@@ -78,11 +84,32 @@ inline apse::SphericalEllipse<float> project(const Geometry &g, const gvec3 &o) 
                           : apse::project_ellipse(o, g.center, g.u, g.v);
 }
 
-/// The one place that turns a sampler name into a sampler for the shading point o: calls
+/// The normal the cosine-weighted samplers weight by, from the receiver's geometric normal n
+/// (Mitsuba's Interaction3f::n: not oriented towards the viewer, zero for medium interactions).
+/// Which side of the surface gathers light depends on the BSDF (one- or two-sided, reflective or
+/// transmissive) and on the side it is seen from, which pdf_direction is not told (integrators
+/// pass it a plain Interaction3f holding p and n only). So: the light entirely on one side of
+/// the receiver's tangent plane -> n oriented towards it (whatever side gathers, the whole light
+/// is then above the horizon: the density is positive over all of it); the light straddling the
+/// plane (either side may be the one that gathers), or n zero or NaN -> zero, the plain map.
+/// The planar ellipse's signed heights above the plane span h ± e, h = n·(c − o),
+/// e = sqrt((n·u)² + (n·v)²). A function of o, n and the light only, so sample_direction and
+/// pdf_direction always pick the same density.
+inline gvec3 receiver_normal(const Geometry &g, const gvec3 &o, const gvec3 &n) {
+    const float h = glm::dot(n, g.center - o), nu = glm::dot(n, g.u), nv = glm::dot(n, g.v);
+    const float e = std::sqrt(nu * nu + nv * nv);
+    if (h > e) return n;
+    if (-h > e) return -n;
+    return gvec3(0.f);
+}
+
+/// The one place that turns a sampler name into a sampler for the shading point o with the
+/// geometric normal n (used by the cosine_* samplers only, through receiver_normal): calls
 /// f(s) with s offering sample(u) -> apse::DirectionSample<float> and pdf(w) (solid angle), and
 /// returns its result. `area` (uniform by area) needs a disk (g.radius > 0).
 template <typename F>
-auto with_sampler(ApseDiskSampler kind, const Geometry &g, const gvec3 &o, F &&f) {
+auto with_sampler(ApseDiskSampler kind, const Geometry &g, const gvec3 &o, const gvec3 &n, F &&f) {
+    using apse::CosineWeighted;
     switch (kind) {
         case ApseDiskSampler::area:
             return f(apse::DiskAreaSampler<float>(o, g.center, g.normal, g.radius));
@@ -90,6 +117,12 @@ auto with_sampler(ApseDiskSampler kind, const Geometry &g, const gvec3 &o, F &&f
         case ApseDiskSampler::parallel: return f(apse::ParallelMap<float>(project(g, o)));
         case ApseDiskSampler::tabulated_ld_radial:
             return f(apse::TabulatedLdRadialMap<float>(project(g, o), table().view()));
+        case ApseDiskSampler::cosine_ld_radial:
+            return f(CosineWeighted<apse::LdRadialMap<float>>(apse::LdRadialMap<float>(project(g, o)),
+                                                              receiver_normal(g, o, n)));
+        case ApseDiskSampler::cosine_tabulated_ld_radial:
+            return f(CosineWeighted<apse::TabulatedLdRadialMap<float>>(
+                apse::TabulatedLdRadialMap<float>(project(g, o), table().view()), receiver_normal(g, o, n)));
         case ApseDiskSampler::ld_radial: break;
     }
     return f(apse::LdRadialMap<float>(project(g, o)));
@@ -191,7 +224,7 @@ public:
         const gvec3 o = to_glm(it.p);
         if (!active || !lit(o)) return { ds, 0.f };
         const apse::DirectionSample<float> s = apse_disk_detail::with_sampler(
-            m_sampler, m_geom, o, [&](const auto &sampler) { return sampler.sample(gvec2(sample.x(), sample.y())); });
+            m_sampler, m_geom, o, to_glm(it.n), [&](const auto &sampler) { return sampler.sample(gvec2(sample.x(), sample.y())); });
         if (!(s.pdf > 0.f)) return { ds, 0.f };
         // Where the ray meets the light's plane: the point the visibility ray is traced to.
         const float t = glm::dot(m_geom.center - o, m_geom.normal) / glm::dot(s.direction, m_geom.normal);
@@ -219,7 +252,7 @@ public:
         const gvec3 o = to_glm(it.p);
         if (!active || !lit(o)) return 0.f;
         const gvec3 w = to_glm(ds.d);
-        return apse_disk_detail::with_sampler(m_sampler, m_geom, o,
+        return apse_disk_detail::with_sampler(m_sampler, m_geom, o, to_glm(it.n),
                                               [&](const auto &sampler) { return sampler.pdf(w); });
     }
 
@@ -287,7 +320,8 @@ public:
     }
 
     std::string to_string() const override {
-        static const char *names[] = { "area", "radial", "ld_radial", "parallel", "tabulated_ld_radial" };
+        static const char *names[] = { "area", "radial", "ld_radial", "parallel", "tabulated_ld_radial",
+                                       "cosine_ld_radial", "cosine_tabulated_ld_radial" };
         std::ostringstream oss;
         oss << "ApseDiskLight[sampler = " << names[(int) m_sampler] << ", twosided = " << m_twosided
             << ", center = " << m_center << ", normal = " << m_normal << ", ";

@@ -19,7 +19,8 @@ import math
 import mitsuba as mi
 
 SCENES = ("plane", "medium", "spheres")
-APSE_SAMPLERS = ("radial", "ld_radial", "parallel", "tabulated_ld_radial")
+APSE_SAMPLERS = ("radial", "ld_radial", "parallel", "tabulated_ld_radial", "cosine_ld_radial",
+                 "cosine_tabulated_ld_radial")
 LIGHTS = ("mitsuba", "area") + APSE_SAMPLERS
 
 T = mi.ScalarTransform4f

@@ -4,9 +4,22 @@
 
 /// @file config.hpp
 /// Version macros and the function qualifiers every public apse function carries.
+///
+/// Macros a user may define before including apse:
+/// * `APSE_NO_SIMD`: no SSE intrinsics on x86 hosts (detail/pairs.hpp computes its pairs of
+///   square roots and quotients with scalar operations, as in device code; results identical).
 
+// C++17 is required (if constexpr, inline variables, hex float literals). MSVC reports
+// __cplusplus as 199711L unless /Zc:__cplusplus is given; _MSVC_LANG holds the real value.
+#if (defined(_MSVC_LANG) && _MSVC_LANG < 201703L) || (!defined(_MSVC_LANG) && __cplusplus < 201703L)
+#error "apse requires C++17 or later (compile with -std=c++17, or /std:c++17 for MSVC)"
+#endif
+
+/// Major version (the CMake package reads the three version macros from this file).
 #define APSE_VERSION_MAJOR 0
+/// Minor version: before 1.0 a new minor version may change the API.
 #define APSE_VERSION_MINOR 1
+/// Patch version.
 #define APSE_VERSION_PATCH 0
 /// Single integer version: major * 10000 + minor * 100 + patch.
 #define APSE_VERSION (APSE_VERSION_MAJOR * 10000 + APSE_VERSION_MINOR * 100 + APSE_VERSION_PATCH)
@@ -15,10 +28,8 @@
 /// compiler (nvcc, or clang in CUDA mode), plain `inline` otherwise.
 #if defined(__CUDACC__)
 #define APSE_FUNC __host__ __device__ inline
-#define APSE_DEVICE_COMPILE 1
 #else
 #define APSE_FUNC inline
-#define APSE_DEVICE_COMPILE 0
 #endif
 
 /// `APSE_NOINLINE`: keeps a large internal function (a Carlson core, a closed-form cumulative
@@ -29,13 +40,4 @@
 #define APSE_NOINLINE __noinline__
 #else
 #define APSE_NOINLINE
-#endif
-
-/// `APSE_ASSERT(cond)`: a debug check of an internal invariant. It compiles to nothing under
-/// `NDEBUG`, in device code, and when `APSE_DISABLE_ASSERT` is defined; never throws.
-#if defined(NDEBUG) || defined(APSE_DISABLE_ASSERT) || defined(__CUDA_ARCH__)
-#define APSE_ASSERT(cond) ((void)0)
-#else
-#include <cassert>
-#define APSE_ASSERT(cond) assert(cond)
 #endif

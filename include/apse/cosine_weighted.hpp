@@ -246,8 +246,8 @@ class CosineWeighted {
 
 public:
     using T = typename Map::vec3::value_type;  ///< float or double
-    using vec2 = glm::vec<2, T>;
-    using vec3 = glm::vec<3, T>;
+    using vec2 = glm::vec<2, T>;  ///< a point of the unit square
+    using vec3 = glm::vec<3, T>;  ///< a 3-D vector (direction, point or normal)
 
     /// Builds the sampler for the light `map` (any of the five maps, already built for the
     /// shading point) and the receiver's normal `normal` (world space, any non-zero finite length;

@@ -4,8 +4,8 @@
 
 /// @file disk_light.hpp
 /// The one-call convenience a renderer wants for a disk light: project the disk seen from the
-/// shading point to its spherical ellipse (projection.hpp, MATH.md §2), sample it with one of the
-/// area-preserving maps (maps/*.hpp, MATH.md §4–5), and return the direction, the point on the
+/// shading point to its spherical ellipse (projection.hpp, docs/math.md §2), sample it with one of the
+/// area-preserving maps (maps/*.hpp, docs/math.md §4–5), and return the direction, the point on the
 /// disk, its distance and the pdf in solid angle; plus the pdf of any direction (for MIS).
 ///
 ///     // per shading point o, for each of n stratified points u:
@@ -39,9 +39,9 @@ namespace apse {
 /// Which area-preserving map a DiskLight uses (all three give the same, uniform, density; they
 /// differ in how they distort the square and so in how well they keep stratification).
 enum class DiskMap {
-    radial,     ///< RadialMap (MATH.md §4)
+    radial,     ///< RadialMap (docs/math.md §4)
     ld_radial,  ///< LdRadialMap: continuous on the whole square; the default
-    parallel,   ///< ParallelMap (MATH.md §5)
+    parallel,   ///< ParallelMap (docs/math.md §5)
 };
 
 /// One sample of a disk light.
@@ -59,8 +59,8 @@ template <class T> struct DiskLightSample {
 /// set by the cosine-weighted samplers; the plain maps alone would take 416 and 208).
 template <class T> class DiskLight {
 public:
-    using vec2 = glm::vec<2, T>;
-    using vec3 = glm::vec<3, T>;
+    using vec2 = glm::vec<2, T>;  ///< a point of the unit square
+    using vec3 = glm::vec<3, T>;  ///< a 3-D vector (direction, point or normal)
 
     /// Disk {p : (p − center)·normal = 0, |p − center| <= radius} seen from `o`; `normal` need
     /// not be unit. Degenerate or invalid input (see project_disk: o in the disk's plane,

@@ -4,7 +4,7 @@
 
 /// @file elliptic.hpp
 /// Elliptic integrals: Carlson's symmetric forms R_F, R_D, R_J, R_C and the Legendre forms
-/// F(phi|m), Pi(n;phi|m), K(m), Pi(n|m) built on them (MATH.md §1, DLMF chapter 19).
+/// F(phi|m), Pi(n;phi|m), K(m), Pi(n|m) built on them (docs/math.md §1, DLMF chapter 19).
 ///
 /// **Parameter m = k^2** everywhere (as DLMF and mpmath `ellipf(phi, m)`, `ellippi(n, phi, m)`,
 /// `ellipk(m)`); Boost.Math and `std::ellint_1/3`, `std::comp_ellint_1/3` take the modulus k.
@@ -59,7 +59,7 @@ template <class T> APSE_FUNC T rj_impl(T x, T y, T z, T p) noexcept {
 
 template <class T> APSE_FUNC T rc_impl(T x, T y) noexcept {
     if (!(x >= T(0) && y > T(0) && is_finite(max_of(x, y)))) return quiet_nan<T>();
-    return rc_core(x, y);
+    return rc_core(std::fabs(x), y);  // fabs: -0 counts as 0 (d / -0 would be -inf)
 }
 
 /// sin and cos of phi reduced to [-pi/2, pi/2] by whole periods: phi = phi_r + j pi, returns
@@ -112,7 +112,7 @@ template <class T> APSE_FUNC T comp_pi_valid(T n, T m) noexcept {
     // (DLMF 19.21.12 with (p-0)(q-0) = (1-m); all terms positive).
     const T np = T(1) + nn;
     const RfRj<T> r = rj_core<T, true>(T(0), mc, T(1), mc / np);
-    return (r.rf + nn * mc / (T(3) * np) * r.rj) / np;
+    return (r.rf + nn * ((mc / np) * (T(1) / T(3)) * r.rj)) / np;
 }
 
 template <class T> APSE_FUNC T comp_pi_impl(T n, T m) noexcept {
@@ -153,7 +153,7 @@ template <class T> APSE_FUNC T pi_impl(T n, T phi, T m) noexcept {
         const T nn = -n, np = T(1) + nn, mc = T(1) - m;
         const T p = c2 + np * s2, q = c2 + mc * s2 / np;
         const RfRj<T> r = rj_core<T, true>(c2, y, T(1), q);
-        v = (s * r.rf + nn * s * c * rc_core(y / p, q) / std::sqrt(p) + nn * mc / (T(3) * np) * s3 * r.rj) / np;
+        v = (s * r.rf + nn * s * c * rc_core(y / p, q) / std::sqrt(p) + nn * ((mc / np) * (T(1) / T(3)) * s3 * r.rj)) / np;
     }
     if (a.j != T(0)) v += T(2) * a.j * comp_pi_valid(n, m);
     return v;
@@ -184,7 +184,7 @@ template <class T> APSE_FUNC T carlson_rd(T x, T y, T z) noexcept {
 
 /// Carlson's symmetric integral of the third kind
 /// R_J(x, y, z, p) = 3/2 int_0^inf dt / ((t+p) sqrt((t+x)(t+y)(t+z))) (DLMF 19.16.2), the
-/// workhorse of the solid angle (MATH.md §3: Omega = 4/3 tan a tan b R_J(0, 1+tan^2 b, 1+tan^2 a, 1)).
+/// workhorse of the solid angle (docs/math.md §3: Omega = 4/3 tan a tan b R_J(0, 1+tan^2 b, 1+tan^2 a, 1)).
 /// Domain: x, y, z >= 0 with at most one zero, p > 0, all finite. p <= 0 (the Cauchy principal
 /// value) is not supported: NaN, as everywhere else outside the domain.
 /// Accuracy (measured): 3.1 eps float, 2.8 eps double (budget 8). With a zero argument (the
@@ -209,7 +209,7 @@ template <class T> APSE_FUNC T carlson_rc(T x, T y) noexcept {
 
 /// Incomplete elliptic integral of the first kind, **parameter m = k^2**:
 /// F(phi|m) = int_0^phi dt / sqrt(1 - m sin^2 t) = sin(phi) R_F(cos^2 phi, 1 - m sin^2 phi, 1)
-/// (DLMF 19.25.5; MATH.md §1). Same as mpmath `ellipf(phi, m)`, `std::ellint_1(sqrt(m), phi)`.
+/// (DLMF 19.25.5; docs/math.md §1). Same as mpmath `ellipf(phi, m)`, `std::ellint_1(sqrt(m), phi)`.
 /// Domain: m < 1 (any negative m), phi finite; beyond |phi| = pi/2 the periodic extension
 /// F(phi + j pi|m) = F(phi|m) + 2 j K(m) is used. m >= 1 (where F is only defined for
 /// |sin phi| < 1/sqrt(m)) is not supported: NaN; so are NaN/infinite arguments.
@@ -221,7 +221,7 @@ template <class T> APSE_FUNC T ellint_f(T phi, T m) noexcept {
 }
 
 /// Incomplete elliptic integral of the third kind, **parameter m = k^2**, characteristic n:
-/// Pi(n;phi|m) = int_0^phi dt / ((1 - n sin^2 t) sqrt(1 - m sin^2 t)) (DLMF 19.2.7; MATH.md §1),
+/// Pi(n;phi|m) = int_0^phi dt / ((1 - n sin^2 t) sqrt(1 - m sin^2 t)) (DLMF 19.2.7; docs/math.md §1),
 /// as mpmath `ellippi(n, phi, m)`. For n >= -1/4: F + (n/3) sin^3 phi R_J(c^2, 1-m s^2, 1, 1-n s^2)
 /// (DLMF 19.25.14); for n < -1/4 (where those two terms cancel: n = -tan^2 b in the parallel
 /// map, |n| up to ~1e4) a form whose terms are all positive, obtained with DLMF 19.21.12.

@@ -7,6 +7,8 @@
 /// square roots and inverse trigonometric functions, and a bracketed Newton–bisection root finder.
 
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <limits>
 
 #include "config.hpp"
@@ -38,12 +40,50 @@ template <class T> APSE_FUNC constexpr T epsilon() noexcept {
     return sizeof(T) == sizeof(float) ? T(0x1p-23) : T(0x1p-52);
 }
 
-/// True if x is NaN (written without std::isnan so it is usable in device code).
-template <class T> APSE_FUNC constexpr bool is_nan(T x) noexcept { return !(x == x); }
+namespace detail {
 
-/// True if x is neither NaN nor +-infinity.
-template <class T> APSE_FUNC constexpr bool is_finite(T x) noexcept {
-    return x - x == x - x;  // inf - inf and NaN - NaN are NaN, which compares unequal
+/// The bits of x with the sign cleared: 32 bits for float, 64 for double. Reading the bits
+/// keeps is_nan / is_finite true to IEEE 754 under -ffast-math / -ffinite-math-only, where
+/// compilers fold `x != x`, `std::isnan(x)` and `std::isfinite(x)` to constants.
+template <class T> APSE_FUNC auto magnitude_bits(T x) noexcept {
+    static_assert(sizeof(T) == sizeof(float) || sizeof(T) == sizeof(double), "float or double");
+    if constexpr (sizeof(T) == sizeof(float)) {
+#if defined(__CUDA_ARCH__)
+        const std::uint32_t b = std::uint32_t(__float_as_uint(float(x)));
+#else
+        std::uint32_t b;
+        std::memcpy(&b, &x, sizeof b);
+#endif
+        return std::uint32_t(b & 0x7fffffffu);
+    } else {
+#if defined(__CUDA_ARCH__)
+        const std::uint64_t b = std::uint64_t(__double_as_longlong(double(x)));
+#else
+        std::uint64_t b;
+        std::memcpy(&b, &x, sizeof b);
+#endif
+        return std::uint64_t(b & 0x7fffffffffffffffull);
+    }
+}
+
+/// The exponent field of T with every bit set (the bits of +infinity).
+template <class T> APSE_FUNC auto infinity_bits() noexcept {
+    if constexpr (sizeof(T) == sizeof(float)) return std::uint32_t(0x7f800000u);
+    else return std::uint64_t(0x7ff0000000000000ull);
+}
+
+}  // namespace detail
+
+/// True if x is NaN. Reads the bit pattern, so it holds under -ffast-math (where `x != x` and
+/// std::isnan fold to false) and in device code.
+template <class T> APSE_FUNC bool is_nan(T x) noexcept {
+    return detail::magnitude_bits(x) > detail::infinity_bits<T>();
+}
+
+/// True if x is neither NaN nor +-infinity. Reads the bit pattern, so it holds under -ffast-math
+/// (where std::isfinite folds to true) and in device code.
+template <class T> APSE_FUNC bool is_finite(T x) noexcept {
+    return detail::magnitude_bits(x) < detail::infinity_bits<T>();
 }
 
 /// x * x.
@@ -55,9 +95,10 @@ template <class T> APSE_FUNC constexpr T min_of(T a, T b) noexcept { return a < 
 /// The larger of a and b (b if either is NaN).
 template <class T> APSE_FUNC constexpr T max_of(T a, T b) noexcept { return a > b ? a : b; }
 
-/// x clamped to [lo, hi]; NaN maps to lo.
-template <class T> APSE_FUNC constexpr T clamp(T x, T lo, T hi) noexcept {
-    return x > lo ? (x < hi ? x : hi) : lo;
+/// x clamped to [lo, hi]; NaN maps to lo (tested on the bits, so also under -ffast-math, where
+/// the comparisons alone may let a NaN through).
+template <class T> APSE_FUNC T clamp(T x, T lo, T hi) noexcept {
+    return is_nan(x) ? lo : (x > lo ? (x < hi ? x : hi) : lo);
 }
 
 /// sqrt(max(x, 0)): for quantities that are non-negative in exact arithmetic but may round

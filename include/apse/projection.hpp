@@ -3,7 +3,7 @@
 #pragma once
 
 /// @file projection.hpp
-/// Shape → spherical ellipse seen from a shading point `o` (MATH.md §2, §2b): disks (closed
+/// Shape → spherical ellipse seen from a shading point `o` (docs/math.md §2, §2b): disks (closed
 /// form), oriented planar ellipses, spheres and ellipsoids (quadric tangent cone + a 3×3
 /// symmetric eigen-problem).
 ///
@@ -49,7 +49,7 @@ template <class T> APSE_FUNC int argmax_abs3(const T v[3]) noexcept {
     return std::fabs(v[2]) > std::fabs(v[i]) ? 2 : i;
 }
 
-/// The spherical ellipse of the quadric cone {v : vᵀ C v <= 0} (MATH.md §2b), the nappe
+/// The spherical ellipse of the quadric cone {v : vᵀ C v <= 0} (docs/math.md §2b), the nappe
 /// containing `toward`, all in a local orthonormal frame `basis[0..2]` (world-space unit vectors).
 /// The eigenvalues l1 >= l2 > 0 > l3 of C give tan² alpha = −l3/l2, tan² beta = −l3/l1.
 ///
@@ -67,7 +67,7 @@ template <class T>
 APSE_FUNC SphericalEllipse<T> ellipse_of_cone(const Sym3<T>& c, const Sym3<T>& cinv, T k2, T det_b,
                                               const glm::vec<3, T> basis[3],
                                               const glm::vec<3, T>& toward) noexcept {
-    using vec3 = glm::vec<3, T>;
+    using vec3 = glm::vec<3, T>;  ///< a 3-D vector (direction, point or normal)
     using E = SphericalEllipse<T>;
     const SymmetricEigen3<T> ec = symmetric_eigen3(c.m00, c.m01, c.m02, c.m11, c.m12, c.m22);
     const SymmetricEigen3<T> ei = symmetric_eigen3(cinv.m00, cinv.m01, cinv.m02, cinv.m11, cinv.m12, cinv.m22);
@@ -118,7 +118,7 @@ APSE_FUNC bool disk_faces(const glm::vec<3, T>& o, const glm::vec<3, T>& center,
 }
 
 /// The spherical ellipse subtended at `o` by the disk {p : (p − center)·n = 0, |p − center| <= radius},
-/// MATH.md §2, in closed form: with d the height of o above the plane, h the distance from the
+/// docs/math.md §2, in closed form: with d the height of o above the plane, h the distance from the
 /// foot of o to the centre, T = d² + h² − r², Delta = sqrt(T² + 4d²r²), lambda = (T + Delta)/2:
 /// tan alpha = r/sqrt(lambda), tan beta = r d/lambda (rewritten without cancellation when T < 0);
 /// the major axis x is perpendicular to the plane through o, the centre and the normal, and the
@@ -134,7 +134,7 @@ APSE_FUNC bool disk_faces(const glm::vec<3, T>& o, const glm::vec<3, T>& center,
 template <class T>
 APSE_FUNC SphericalEllipse<T> project_disk(const glm::vec<3, T>& o, const glm::vec<3, T>& center,
                                            const glm::vec<3, T>& normal, T radius) noexcept {
-    using vec3 = glm::vec<3, T>;
+    using vec3 = glm::vec<3, T>;  ///< a 3-D vector (direction, point or normal)
     using E = SphericalEllipse<T>;
     const vec3 w0 = center - o;
     const T w_max = detail::max_abs3(w0);
@@ -269,7 +269,7 @@ APSE_FUNC bool ellipse_faces(const glm::vec<3, T>& o, const glm::vec<3, T>& cent
 }
 
 /// The spherical ellipse subtended at `o` by the planar ellipse
-/// {center + s U + t V : s² + t² <= 1} (U = semi_axis_u, V = semi_axis_v), MATH.md §2b.
+/// {center + s U + t V : s² + t² <= 1} (U = semi_axis_u, V = semi_axis_v), docs/math.md §2b.
 /// U and V need not be orthogonal: any two non-parallel vectors (conjugate semi-diameters)
 /// define an ellipse; orthogonal ones are its semi-axes. A disk is U = r e1, V = r e2 and gives
 /// project_disk's ellipse (to rounding). Method: the cone matrix is built in the plane's frame
@@ -278,13 +278,13 @@ APSE_FUNC bool ellipse_faces(const glm::vec<3, T>& o, const glm::vec<3, T>& cent
 /// the exact determinant (detail::ellipse_of_cone), so thin ellipses, far lights and points near
 /// the plane all keep full relative accuracy. Cost: two 3×3 Jacobi solves (~1 µs).
 /// Two-sided; empty for o in the plane, parallel/zero/non-finite axes, NaN/Inf anywhere (see
-/// the file comment). Accuracy: as project_disk, a few times its rounding error
-/// (docs/projection.md).
+/// the file comment; axes within ~8 eps of parallel count as parallel). Accuracy: as
+/// project_disk, a few times its rounding error (docs/projection.md).
 template <class T>
 APSE_FUNC SphericalEllipse<T> project_ellipse(const glm::vec<3, T>& o, const glm::vec<3, T>& center,
                                               const glm::vec<3, T>& semi_axis_u,
                                               const glm::vec<3, T>& semi_axis_v) noexcept {
-    using vec3 = glm::vec<3, T>;
+    using vec3 = glm::vec<3, T>;  ///< a 3-D vector (direction, point or normal)
     using E = SphericalEllipse<T>;
     const vec3 p0 = center - o;
     if (!detail::finite3(p0) || !detail::finite3(semi_axis_u) || !detail::finite3(semi_axis_v))
@@ -293,7 +293,13 @@ APSE_FUNC SphericalEllipse<T> project_ellipse(const glm::vec<3, T>& o, const glm
     if (!(s_max > T(0))) return E::make_empty();
     const detail::Pow2Scale<T> sc = detail::pow2_scale_for(s_max);
     const vec3 p = sc(p0), u = sc(semi_axis_u), v = sc(semi_axis_v);
-    const vec3 n = detail::robust_normalize(glm::cross(u, v));
+    // Parallel axes: u × v is then a rounding residual, which is not exactly 0 when the compiler
+    // contracts a·b − c·d into an FMA (-march=x86-64-v3, AArch64, nvcc); below 8 eps |u| |v|
+    // (per component) the axes are taken as parallel, so the ellipse is empty either way.
+    const vec3 uxv = glm::cross(u, v);
+    if (!(detail::max_abs3(uxv) > T(8) * epsilon<T>() * detail::max_abs3(u) * detail::max_abs3(v)))
+        return E::make_empty();
+    const vec3 n = detail::robust_normalize(uxv);
     if (!(glm::dot(n, n) > T(0))) return E::make_empty();
     const vec3 e1 = detail::robust_normalize(u - glm::dot(u, n) * n);
     if (!(glm::dot(e1, e1) > T(0))) return E::make_empty();
@@ -330,7 +336,7 @@ APSE_FUNC SphericalEllipse<T> project_ellipse(const glm::vec<3, T>& o, const glm
                                    k * k, det_b, basis, vec3(T(0), T(0), T(1)));
 }
 
-/// The spherical cap subtended at `o` by the sphere |p − center| <= radius (MATH.md §2b):
+/// The spherical cap subtended at `o` by the sphere |p − center| <= radius (docs/math.md §2b):
 /// alpha = beta = asin(radius / |center − o|), tan alpha = radius / sqrt((D − R)(D + R)),
 /// z towards the centre, (x, y) a deterministic frame around it.
 /// Empty for o inside or on the sphere (documented choice: a point inside sees the emitter in
@@ -340,7 +346,7 @@ APSE_FUNC SphericalEllipse<T> project_ellipse(const glm::vec<3, T>& o, const glm
 template <class T>
 APSE_FUNC SphericalEllipse<T> project_sphere(const glm::vec<3, T>& o, const glm::vec<3, T>& center,
                                              T radius) noexcept {
-    using vec3 = glm::vec<3, T>;
+    using vec3 = glm::vec<3, T>;  ///< a 3-D vector (direction, point or normal)
     using E = SphericalEllipse<T>;
     const vec3 p0 = center - o;
     const T p_max = detail::max_abs3(p0);
@@ -357,7 +363,7 @@ APSE_FUNC SphericalEllipse<T> project_sphere(const glm::vec<3, T>& o, const glm:
 }
 
 /// The spherical ellipse subtended at `o` by the solid ellipsoid
-/// {center + s1 A1 + s2 A2 + s3 A3 : s1² + s2² + s3² <= 1} (semi-axis vectors A1, A2, A3), MATH.md §2b:
+/// {center + s1 A1 + s2 A2 + s3 A3 : s1² + s2² + s3² <= 1} (semi-axis vectors A1, A2, A3), docs/math.md §2b:
 /// the tangent cone C = (qᵀAq − 1) A − (Aq)(Aq)ᵀ, q = o − center, is decomposed in the
 /// ellipsoid's principal frame, without cancelling terms, together with its inverse (the dual
 /// quadric diag(a_i²) − q qᵀ) and its exact determinant (detail::ellipse_of_cone): accurate for
@@ -373,7 +379,7 @@ template <class T>
 APSE_FUNC SphericalEllipse<T> project_ellipsoid(const glm::vec<3, T>& o, const glm::vec<3, T>& center,
                                                 const glm::vec<3, T>& axis1, const glm::vec<3, T>& axis2,
                                                 const glm::vec<3, T>& axis3) noexcept {
-    using vec3 = glm::vec<3, T>;
+    using vec3 = glm::vec<3, T>;  ///< a 3-D vector (direction, point or normal)
     using E = SphericalEllipse<T>;
     const vec3 q0 = o - center;
     if (!detail::finite3(q0) || !detail::finite3(axis1) || !detail::finite3(axis2) || !detail::finite3(axis3))
@@ -383,9 +389,17 @@ APSE_FUNC SphericalEllipse<T> project_ellipsoid(const glm::vec<3, T>& o, const g
     if (!(s_max > T(0))) return E::make_empty();
     const detail::Pow2Scale<T> sc = detail::pow2_scale_for(s_max);
     const vec3 q = sc(q0), A1 = sc(axis1), A2 = sc(axis2), A3 = sc(axis3);
-    const T a1 = std::sqrt(glm::dot(A1, A1)), a2 = std::sqrt(glm::dot(A2, A2)), a3 = std::sqrt(glm::dot(A3, A3));
+    // The squared length of an axis ~1e-21 times the largest (scaled units) is a float denormal,
+    // whose few bits left e1 = A1/a1 1e-4 off unit length, and the frame with it (found by
+    // fuzz_shapes): e1 comes from the scale-free robust_normalize, and below the normal range a
+    // length is A · (A/|A|) instead of sqrt(A · A).
+    const auto length = [](const vec3& a) {
+        const T d = glm::dot(a, a);
+        return d >= detail::square_safe_min<T>() ? std::sqrt(d) : glm::dot(a, detail::robust_normalize(a));
+    };
+    const T a1 = length(A1), a2 = length(A2), a3 = length(A3);
     if (!(a1 > T(0) && a2 > T(0) && a3 > T(0))) return E::make_empty();
-    const vec3 e1 = A1 / a1;
+    const vec3 e1 = detail::robust_normalize(A1);
     const T tol = T(1e-3);
     if (!(std::fabs(glm::dot(e1, A2)) <= tol * a2 && std::fabs(glm::dot(e1, A3)) <= tol * a3 &&
           std::fabs(glm::dot(A2, A3)) <= tol * a2 * a3))

@@ -4,7 +4,7 @@
 
 /// @file spherical_ellipse.hpp
 /// `SphericalEllipse<T>`: the region of the unit sphere cut out by an elliptic cone with apex at
-/// the shading point (MATH.md §1) — what `projection.hpp` produces and every map samples.
+/// the shading point (docs/math.md §1) — what `projection.hpp` produces and every map samples.
 
 #include <cmath>
 
@@ -56,7 +56,7 @@ template <class T> APSE_FUNC void sin_cos_of_atan2(T ta, T tb, SinCos<T>& a, Sin
 
 }  // namespace detail
 
-/// A spherical ellipse (MATH.md §1): the directions `w` with `w.z > 0` and
+/// A spherical ellipse (docs/math.md §1): the directions `w` with `w.z > 0` and
 /// `(w.x / (w.z tan alpha))^2 + (w.y / (w.z tan beta))^2 <= 1` in its own frame, i.e. the
 /// intersection of the unit sphere with an elliptic cone whose axis is `z`.
 ///
@@ -68,7 +68,7 @@ template <class T> APSE_FUNC void sin_cos_of_atan2(T ta, T tb, SinCos<T>& a, Sin
 ///   cancellation, from the two tangents. The arcs themselves are `alpha()` and `beta()` (one atan
 ///   per call: of the maps only the parallel one needs them, once, at set-up).
 /// * `m`, `one_minus_m`: the parameter m = k^2 = (tan^2 alpha − tan^2 beta)/(1 + tan^2 alpha) of the
-///   ellipse's elliptic integrals (MATH.md §3) and its complement 1 − m = cos^2 alpha / cos^2 beta,
+///   ellipse's elliptic integrals (docs/math.md §3) and its complement 1 − m = cos^2 alpha / cos^2 beta,
 ///   both computed without cancellation.
 ///
 /// Build it with `from_tangents` (or a `project_*` function); it is trivially copyable and
@@ -78,7 +78,7 @@ template <class T> APSE_FUNC void sin_cos_of_atan2(T ta, T tb, SinCos<T>& a, Sin
 template <class T> struct SphericalEllipse {
     static_assert(sizeof(T) == sizeof(float) || sizeof(T) == sizeof(double),
                   "apse: T must be float or double");
-    using vec3 = glm::vec<3, T>;
+    using vec3 = glm::vec<3, T>;  ///< a 3-D vector (direction, point or normal)
 
     vec3 x;  ///< major-axis direction (world space, unit)
     vec3 y;  ///< minor-axis direction (world space, unit), y = z × x
@@ -175,7 +175,7 @@ template <class T> struct SphericalEllipse {
     /// empty ellipse return pdf 0 ("no sample").
     APSE_FUNC bool empty() const noexcept { return !(tan_beta > T(0)); }
 
-    /// Solid angle (steradians) of the ellipse, MATH.md §3, by the cancellation-free form
+    /// Solid angle (steradians) of the ellipse, docs/math.md §3, by the cancellation-free form
     /// Omega = (4/3) tan(alpha) tan(beta) R_J(0, 1 + tan^2 beta, 1 + tan^2 alpha, 1)
     ///       = (4/3) sin(alpha) cos(alpha) sin(beta) cos(beta) sqrt(P) R_J(0, cos^2 alpha, cos^2 beta, P),
     /// P = cos^2 alpha cos^2 beta (homogeneity of R_J), evaluated from the stored sines and

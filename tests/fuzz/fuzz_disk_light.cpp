@@ -9,7 +9,7 @@
 // Build: clang++ -fsanitize=fuzzer,address,undefined (tests/CMakeLists.txt, APSE_BUILD_FUZZERS).
 #include <apse/disk_light.hpp>
 
-#include <fuzzer/FuzzedDataProvider.h>
+#include "fuzz_common.hpp"
 
 #include <cmath>
 #include <cstdint>
@@ -29,22 +29,8 @@ double g_u[2];
     std::abort();
 }
 
-template <class T> bool finite3(const glm::vec<3, T>& v) {
-    return apse::is_finite(v.x) && apse::is_finite(v.y) && apse::is_finite(v.z);
-}
-
-/// A value: either raw bits (any double, NaN/Inf/denormal/huge included) or, more often, a
-/// "plausible" value: mantissa in [-1, 1] times a power of ten in [1e-12, 1e12], or small integers.
-double value(FuzzedDataProvider& in) {
-    switch (in.ConsumeIntegralInRange<int>(0, 3)) {
-        case 0: return in.ConsumeFloatingPoint<double>();
-        case 1: return double(in.ConsumeIntegralInRange<int>(-4, 4));
-        default: {
-            const double m = in.ConsumeFloatingPointInRange<double>(-1.0, 1.0);
-            return m * std::pow(10.0, in.ConsumeIntegralInRange<int>(-12, 12));
-        }
-    }
-}
+using apse_fuzz::finite3;
+using apse_fuzz::value;
 
 template <class T> void check(const double* g, apse::DiskMap map, bool cosine, T u1, T u2) {
     using V = glm::vec<3, T>;

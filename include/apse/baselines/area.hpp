@@ -30,11 +30,12 @@ namespace apse {
 /// non-finite, a radius whose reciprocal overflows, a zero or non-finite normal, or a non-finite
 /// centre. `normal` need not be unit length (it is normalised). Trivially copyable.
 template <class T> struct DiskFrame {
-    using vec3 = glm::vec<3, T>;
+    using vec3 = glm::vec<3, T>;  ///< a 3-D vector (direction, point or normal)
 
     vec3 center;   ///< the disk's centre
     vec3 n;        ///< unit normal ((0, 0, 1) when invalid)
-    vec3 e1, e2;   ///< unit in-plane axes, (e1, e2, n) right-handed
+    vec3 e1;       ///< first unit in-plane axis
+    vec3 e2;       ///< second unit in-plane axis, (e1, e2, n) right-handed
     T radius;      ///< r (0 when invalid)
     T inv_radius;  ///< 1/r (0 when invalid)
 
@@ -67,8 +68,8 @@ template <class T> struct DiskFrame {
 /// square root, one division. Trivially copyable.
 template <class T> class DiskAreaSampler {
 public:
-    using vec2 = glm::vec<2, T>;
-    using vec3 = glm::vec<3, T>;
+    using vec2 = glm::vec<2, T>;  ///< a point of the unit square
+    using vec3 = glm::vec<3, T>;  ///< a 3-D vector (direction, point or normal)
 
     /// The sampler at `o` for the light's stored frame (the renderer's per-shading-point call).
     APSE_FUNC DiskAreaSampler(const vec3& o, const DiskFrame<T>& frame) noexcept

@@ -3,7 +3,7 @@
 #pragma once
 
 /// @file baselines/gamito.hpp
-/// The Gamito (EGSR 2016) baseline for disk lights, MATH.md §7: sample the spherical rectangle
+/// The Gamito (EGSR 2016) baseline for disk lights, docs/math.md §7: sample the spherical rectangle
 /// of the disk's circumscribed square (side 2r, one edge along the symmetry plane through o,
 /// the centre and the normal) with the Ureña–Fajardo–King map (rectangle.hpp) and reject what
 /// misses the disk. Two **unbiased** variants — the pdf each reports is the density it really
@@ -29,14 +29,14 @@
 namespace apse {
 namespace detail {
 
-/// The disk's circumscribed square as a SphericalRectangle seen from o (MATH.md §7): centred on
+/// The disk's circumscribed square as a SphericalRectangle seen from o (docs/math.md §7): centred on
 /// `center`, side 2·radius, edge_y along the in-plane direction from o's foot point to the
 /// centre (any in-plane direction when o is on the axis), edge_x = edge_y × normal. Empty for
 /// radius <= 0, a zero or non-finite normal, NaN/Inf coordinates, o in the plane.
 template <class T>
 APSE_FUNC SphericalRectangle<T> gamito_square(const glm::vec<3, T>& o, const glm::vec<3, T>& center,
                                               const glm::vec<3, T>& normal, T radius) noexcept {
-    using vec3 = glm::vec<3, T>;
+    using vec3 = glm::vec<3, T>;  ///< a 3-D vector (direction, point or normal)
     const vec3 n = robust_normalize(normal);
     const vec3 w0 = center - o;
     if (!(radius > T(0)) || !is_finite(radius) || !(glm::dot(n, n) > T(0)) || !finite3(w0))
@@ -115,7 +115,7 @@ template <class T> struct AttemptSequence {
 
 }  // namespace detail
 
-/// Gamito single shot: one Ureña sample of the disk's circumscribed square (MATH.md §7); if it
+/// Gamito single shot: one Ureña sample of the disk's circumscribed square (docs/math.md §7); if it
 /// lands on the disk it is returned with pdf 1/Omega_square (the density it was drawn from),
 /// otherwise "no sample" (pdf 0). E[f/pdf · 1_sample] = int_disk f: unbiased. Acceptance
 /// probability Omega_disk/Omega_square (~0.75–0.83; far-field limit pi/4 for a frontal disk).
@@ -124,8 +124,8 @@ template <class T> struct AttemptSequence {
 /// (every pdf 0) for degenerate input or o in the disk's plane. Measure: solid angle.
 template <class T> class GamitoSingleShot {
 public:
-    using vec2 = glm::vec<2, T>;
-    using vec3 = glm::vec<3, T>;
+    using vec2 = glm::vec<2, T>;  ///< a point of the unit square
+    using vec3 = glm::vec<3, T>;  ///< a 3-D vector (direction, point or normal)
 
     /// An empty sampler.
     GamitoSingleShot() = default;
@@ -163,7 +163,7 @@ private:
 };
 
 /// Gamito with bounded retries: up to `max_attempts` = N Ureña samples of the circumscribed
-/// square (MATH.md §7), the first on u and the others on the deterministic pseudo-random
+/// square (docs/math.md §7), the first on u and the others on the deterministic pseudo-random
 /// sequence detail::AttemptSequence keyed by u's bits (no unbounded loop). The first one that
 /// lands on the disk is returned with its exact density
 ///     pdf = (1 − (1 − A)^N) / Omega_disk,   A = Omega_disk / Omega_square
@@ -175,8 +175,8 @@ private:
 /// (also empty if project_disk finds the disk empty). Measure: solid angle.
 template <class T> class GamitoRetry {
 public:
-    using vec2 = glm::vec<2, T>;
-    using vec3 = glm::vec<3, T>;
+    using vec2 = glm::vec<2, T>;  ///< a point of the unit square
+    using vec3 = glm::vec<3, T>;  ///< a 3-D vector (direction, point or normal)
 
     /// An empty sampler.
     GamitoRetry() = default;

@@ -5,7 +5,7 @@
 /// @file baselines/rectangle.hpp
 /// Uniform sampling of the solid angle subtended by a planar rectangle: the area-preserving map
 /// of Ureña, Fajardo & King, "An Area-Preserving Parametrization for Spherical Rectangles"
-/// (EGSR 2013), MATH.md §7. It is the building block of the Gamito baseline (gamito.hpp) and a
+/// (EGSR 2013), docs/math.md §7. It is the building block of the Gamito baseline (gamito.hpp) and a
 /// rectangle-light sampler in its own right.
 ///
 /// The map is the published one — u1 picks the column x of the rectangle whose left part
@@ -153,7 +153,7 @@ APSE_FUNC T rectangle_solid_angle(T x0, T w, T y0, T h, T d) noexcept {
 }  // namespace detail
 
 /// The spherical rectangle subtended by a planar rectangle light at a shading point `o`, with
-/// the Ureña–Fajardo–King area-preserving map from the unit square (MATH.md §7).
+/// the Ureña–Fajardo–King area-preserving map from the unit square (docs/math.md §7).
 ///
 /// * Geometry is two-sided: o may be on either side of the plane (cull one-sided emitters
 ///   yourself). The rectangle is `corner + [0,1]·edge_x + [0,1]·edge_y`; the edges should be
@@ -168,8 +168,8 @@ APSE_FUNC T rectangle_solid_angle(T x0, T w, T y0, T h, T d) noexcept {
 /// Trivially copyable, no heap: pass it to kernels by value.
 template <class T> class SphericalRectangle {
 public:
-    using vec2 = glm::vec<2, T>;
-    using vec3 = glm::vec<3, T>;
+    using vec2 = glm::vec<2, T>;  ///< a point of the unit square
+    using vec3 = glm::vec<3, T>;  ///< a 3-D vector (direction, point or normal)
 
     /// An empty rectangle (solid angle 0; `sample` returns pdf 0).
     SphericalRectangle() = default;
@@ -424,9 +424,13 @@ private:
         RectanglePoint<T> r;
         r.direction = detail::robust_normalize(v);
         r.distance = glm::dot(v, r.direction);  // |v|, without overflow
-        if (!(r.distance > T(0))) r.direction = vec3(T(0), T(0), T(1));
-        r.pdf = pdf;
         r.point = base_ + tw * xh_ + sw * yh_;
+        // No sample (pdf 0) when v = 0 after rounding (a point next to o on a rectangle ~1e16
+        // (double) or ~1e7 (float) times larger than o's distance to it, where v cancels) or when
+        // the point or its distance is beyond the type's range (coordinates near its maximum)
+        const bool usable = r.distance > T(0) && is_finite(r.distance) && detail::finite3(r.point);
+        if (!(r.distance > T(0))) r.direction = vec3(T(0), T(0), T(1));
+        r.pdf = usable ? pdf : T(0);
         r.st = vec2(t / w_, s / h_);
         return r;
     }

@@ -41,6 +41,9 @@ namespace detail {
 /// Hard cap on duplication steps. Valid inputs need at most ~16 (double, arguments spanning
 /// the whole exponent range); the cap only bounds the work for inputs that are not.
 constexpr int carlson_max_steps = 64;
+/// Steps run on one count before the count is made again (see duplicate_until_converged): more
+/// than any argument ratio up to 4^16 needs, so such inputs count once.
+constexpr int carlson_chunk_steps = 16;
 
 /// Stopping tolerance on max |X_i| for R_F: (eps / (8 C))^(1/10), C = 0.0129 the largest
 /// coefficient of the degree-10 truncation error (maximised numerically over all directions,
@@ -198,17 +201,26 @@ APSE_FUNC T duplicate_until_converged(T q, T a0, Step&& step, Lower&& lower) noe
     step(f);
     f *= T(0.25);
     T rest = q * f;
-    const T lo = lower();
-    int n = 0;
-    while (rest > lo && n < carlson_max_steps) {
-        rest *= T(0.25);
-        ++n;
+    int done = 2;
+    for (;;) {
+        // Steps needed if the smallest argument stayed at its current value; it only grows, so
+        // for widely spread arguments (ratios beyond ~4^16) this overestimates: run at most
+        // carlson_chunk_steps of them, then count again from the grown smallest argument.
+        const T lo = lower();
+        int n = 0;
+        while (rest > lo && n < carlson_chunk_steps && done + n < carlson_max_steps) {
+            rest *= T(0.25);
+            ++n;
+        }
+        for (int i = 0; i < n; ++i) {
+            step(f);
+            f *= T(0.25);
+        }
+        done += n;
+        if (!(rest > lo)) return f;
+        if (done >= carlson_max_steps) break;
     }
-    for (int i = 0; i < n; ++i) {
-        step(f);
-        f *= T(0.25);
-    }
-    return rest > lo ? quiet_nan<T>() : f;  // cannot converge within the cap: NaN, never garbage
+    return rest > lower() ? quiet_nan<T>() : f;  // cannot converge within the cap: NaN, never garbage
 }
 
 /// R_F and R_J of one argument triple (the kernels that compute both share their work).
@@ -308,8 +320,10 @@ template <class T> APSE_FUNC T rf_core(T x, T y, T z) noexcept {
     if (x == T(0)) return agm_rf(y, z);
     if (y == T(0)) return agm_rf(x, z);
     if (z == T(0)) return agm_rf(x, y);
-    if (!is_finite(x + y + z))  // the mean would overflow: R_F(v/16) = 4 R_F(v)
-        return T(0.25) * rf_duplication(x * T(0.0625), y * T(0.0625), z * T(0.0625));
+    // The mean, or the step count's q (<= the sum / tolerance, ~30x), would overflow:
+    // R_F(v/64) = 8 R_F(v).
+    if (!is_finite((x + y + z) * (T(1) / rf_tolerance<T>())))
+        return T(0.125) * rf_duplication(x * T(0.015625), y * T(0.015625), z * T(0.015625));
     return rf_duplication(x, y, z);
 }
 
@@ -390,7 +404,12 @@ APSE_FUNC RfRj<T> rj_scaled(T x, T y, T z, T p) noexcept {
     if (mx <= hi && mx >= lo) return rj_dispatch<T, WithRf>(x, y, z, p);
     int ex = 0;
     (void)std::frexp(mx, &ex);
-    const int k = ex / 2;  // scale by 4^-k: the largest argument lands in [1/4, 4)
+    // Scale by 4^-k. Small arguments: the largest lands in [1/4, 4). Large ones: the largest
+    // lands in [2^(e-2), 2^e), e = 24 (float) / 256 (double), inside the unscaled range, so that
+    // the other arguments keep as much of the exponent range as possible (landing the largest
+    // at 1 pushed arguments ~1e-308 of it into the subnormals and the scaled R_J to overflow).
+    constexpr int top_exponent = sizeof(T) == sizeof(float) ? 24 : 256;
+    const int k = mx > hi ? (ex - top_exponent) / 2 : ex / 2;
     const T s = std::ldexp(T(1), -2 * k);
     RfRj<T> r = rj_dispatch<T, WithRf>(x * s, y * s, z * s, p * s);
     r.rj = std::ldexp(r.rj, -3 * k);
@@ -441,9 +460,11 @@ template <class T> APSE_FUNC APSE_NOINLINE T rd_core(T x, T y, T z) noexcept {
     // R_D(0, y, z) = R_J(0, y, z, z): complete, by the AGM (via rj_core, which scales).
     if (x == T(0) || y == T(0)) return rj_core(x, y, z, z).rj;
     T scale = T(1);
-    if (!is_finite(x + y + T(3) * z)) {  // the sum overflows: R_D(v/16) = 64 R_D(v)
-        x *= T(0.0625), y *= T(0.0625), z *= T(0.0625);
-        scale = T(1) / T(64);
+    // The sum, or q below (<= the sum / tolerance, up to ~37x), would overflow:
+    // R_D(v/64) = 512 R_D(v).
+    if (!is_finite((x + y + T(3) * z) * (T(1) / rj_tolerance<T>()))) {
+        x *= T(0.015625), y *= T(0.015625), z *= T(0.015625);
+        scale = T(1) / T(512);
     }
     const T a0 = (x + y + T(3) * z) * T(0.2);
     const T dx = a0 - x, dy = a0 - y;

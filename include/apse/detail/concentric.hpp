@@ -4,7 +4,7 @@
 
 /// @file detail/concentric.hpp
 /// Shirley–Chiu concentric map of the unit square onto the unit disk and its inverse, in polar
-/// form (MATH.md §4). It is area-preserving (up to the factor pi) and maps concentric squares
+/// form (docs/math.md §4). It is area-preserving (up to the factor pi) and maps concentric squares
 /// to concentric circles, so it keeps stratification. Used by uniform-by-area disk sampling
 /// (signed form: point = radius (cos angle, sin angle), angle in [−pi/4, 3pi/4]) and by the LD-radial map (azimuthal area fraction
 /// `turns` = angle / (2 pi), radial fraction radius^2).
@@ -27,7 +27,7 @@ template <class T> struct ConcentricPolar {
     APSE_FUNC T angle() const noexcept { return two_pi_v<T> * turns; }
 };
 
-/// Concentric map (MATH.md §4): A = 2u1 − 1, B = 2u2 − 1; if |A| > |B|: radius |A|,
+/// Concentric map (docs/math.md §4): A = 2u1 − 1, B = 2u2 − 1; if |A| > |B|: radius |A|,
 /// angle (pi/4)(B/A) (+pi if A < 0, +2pi if A > 0 > B); else radius |B|,
 /// angle pi/2 − (pi/4)(A/B) (+pi if B < 0); the square's centre → (0, 0).
 /// Domain [0, 1]^2; coordinates outside are clamped into it (NaN → 0).

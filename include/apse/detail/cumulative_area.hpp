@@ -3,7 +3,7 @@
 #pragma once
 
 /// @file detail/cumulative_area.hpp
-/// The cumulative areas the maps invert (MATH.md §4–5), written without cancellation, with their
+/// The cumulative areas the maps invert (docs/math.md §4–5), written without cancellation, with their
 /// densities and the densities' slopes (for Halley steps and for the cheap Hermite increments of
 /// detail/inversion.hpp).
 ///
@@ -13,7 +13,7 @@
 /// azimuth is tan phi = (b/a) tan tau. In tau the area density is smooth and bounded,
 ///     dOmega_r/dtau = (1 − cos theta_max) dphi/dtau = a b / (1 + C(tau))   in [ab/2, ab],
 /// (*derived*; the paper works in phi, where the density varies by 1/(1 − cos beta)), and
-/// MATH.md's cancellation-free Omega_r, rewritten in tau with the homogeneity of R_J (*derived*;
+/// the cancellation-free Omega_r of docs/math.md §4, rewritten in tau with the homogeneity of R_J (*derived*;
 /// the gnomonic anomaly t has cos t = cos alpha cos tau / C, sin t = cos beta sin tau / C, and
 /// w = sqrt(1 − m sin^2 t) = cos alpha / C), is
 ///     Omega_r(tau) = (a b cos^2 beta / (3 cos alpha)) sin^3 tau
@@ -31,7 +31,7 @@
 /// (Van Oosterom–Strackee), S = sin(beta − psi) sin(beta + psi), N^2 = b^2 cos^2 alpha + a^2 S,
 /// P = (a sqrt(S), b cos alpha sin psi, b cos alpha cos psi)/N, so x_max(psi) = a sqrt(S)/N and
 /// C = b cos alpha cos psi / N. Every term is non-negative: no cancellation, also where the
-/// Legendre/Carlson form of MATH.md §5 loses digits (nearly hemispherical ellipses). The parallel
+/// Legendre/Carlson form of docs/math.md §5 loses digits (nearly hemispherical ellipses). The parallel
 /// map solves for the distance e = beta − psi to the end of the minor axis, so sin(beta − psi) is
 /// exact near the end where the slice shrinks to a point.
 

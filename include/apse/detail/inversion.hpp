@@ -3,7 +3,7 @@
 #pragma once
 
 /// @file detail/inversion.hpp
-/// Inversion of a cumulative area A(x) = target (MATH.md §6, §11–12), shared by every map: a
+/// Inversion of a cumulative area A(x) = target (docs/math.md §6, §11–12), shared by every map: a
 /// bracketed Halley/Newton iteration with the exact density A'(x) and its slope A''(x), in which
 /// only the first value of A comes from the closed form (one R_J): each later A(x_{k+1}) is the
 /// previous value plus the increment over [x_k, x_{k+1}] by the two-point Hermite (corrected

@@ -3,14 +3,14 @@
 #pragma once
 
 /// @file detail/ld_composition.hpp
-/// The LD-radial composition (MATH.md §4), written once for LdRadialMap (over RadialMap) and
+/// The LD-radial composition (docs/math.md §4), written once for LdRadialMap (over RadialMap) and
 /// TabulatedLdRadialMap (over TabulatedMap): the Shirley–Chiu concentric map first
 /// (detail/concentric.hpp), then the radial-type map with u1 = angle/(2 pi) (azimuthal area
 /// fraction) and u2 = radius^2 (radial solid-angle fraction); the inverse goes back the same way.
 /// The concentric map preserves area, so the composition has the radial map's density.
 ///
 /// `Radial` is RadialMap<T> or TabulatedMap<T>: it provides `ellipse()`, `sample(u, iterations)`
-/// and `local_coordinates(l)` (MATH.md §4 inverse on the unit local direction l).
+/// and `local_coordinates(l)` (docs/math.md §4 inverse on the unit local direction l).
 
 #include <cmath>
 

@@ -9,14 +9,15 @@
 /// (`sqrtps`/`divps` in float) compute two lanes for about the price of one (measured: R_F -12%,
 /// R_J -9%, disk projection -6%). The results are bit-identical to the scalar operations (IEEE
 /// square roots and quotients are correctly rounded either way). Elsewhere (CUDA device code,
-/// non-x86 hosts) they are the two scalar operations.
+/// non-x86 hosts, or with `APSE_NO_SIMD` defined) they are the two scalar operations.
 
 #include <cmath>
 
 #include "../config.hpp"
 
-// SSE2: every x86-64 host compiler; never in CUDA device code.
-#if (defined(__SSE2__) || defined(_M_X64)) && !defined(__CUDA_ARCH__)
+// SSE2: every x86-64 host compiler; never in CUDA device code, nor when the user defines
+// APSE_NO_SIMD before including apse (the scalar path, the one device code takes).
+#if (defined(__SSE2__) || defined(_M_X64)) && !defined(__CUDA_ARCH__) && !defined(APSE_NO_SIMD)
 #include <emmintrin.h>
 #define APSE_PAIRS_SSE2 1
 #else

@@ -3,7 +3,7 @@
 #pragma once
 
 /// @file detail/quadrant.hpp
-/// The symmetry bookkeeping shared by the radial, LD-radial and parallel maps (MATH.md §4–5):
+/// The symmetry bookkeeping shared by the radial, LD-radial and parallel maps (docs/math.md §4–5):
 /// every map solves its cumulative-area equation on one quadrant (radial) or one half (parallel)
 /// of the ellipse and reaches the others by reflection. Written once here:
 ///

@@ -3,7 +3,7 @@
 #pragma once
 
 /// @file detail/radial_polar.hpp
-/// The polar step of the radial maps (MATH.md §4), written once for RadialMap and TabulatedMap
+/// The polar step of the radial maps (docs/math.md §4), written once for RadialMap and TabulatedMap
 /// (and through them LdRadialMap and TabulatedLdRadialMap): once u1 has fixed the azimuth, i.e.
 /// the boundary point of the ellipse at that azimuth, u2 picks the polar angle uniformly in solid
 /// angle along the wedge from the centre to that boundary point; and the inverse, u2 of a

@@ -4,7 +4,7 @@
 
 /// @file maps/ld_radial.hpp
 /// `LdRadialMap<T>`: the paper's LD-radial ("low-distortion radial") map (authors' code:
-/// `concentric`), MATH.md §4 — the Shirley–Chiu concentric map first, then the radial map with
+/// `concentric`), docs/math.md §4 — the Shirley–Chiu concentric map first, then the radial map with
 /// u1 = angle/(2 pi) (azimuthal area fraction) and u2 = radius^2 (radial solid-angle fraction).
 /// Both steps preserve area, so the composition does; it is continuous on the whole closed
 /// square (centre → ellipse centre, boundary → ellipse boundary).
@@ -19,13 +19,13 @@
 
 namespace apse {
 
-/// LD-radial area-preserving map of the unit square onto a spherical ellipse (MATH.md §4):
+/// LD-radial area-preserving map of the unit square onto a spherical ellipse (docs/math.md §4):
 /// RadialMap composed with the concentric map (same set-up, inversion and accuracy as
 /// RadialMap). Trivially copyable.
 template <class T> class LdRadialMap {
 public:
-    using vec2 = glm::vec<2, T>;
-    using vec3 = glm::vec<3, T>;
+    using vec2 = glm::vec<2, T>;  ///< a point of the unit square
+    using vec3 = glm::vec<3, T>;  ///< a 3-D vector (direction, point or normal)
 
     /// Builds the map for `ellipse` (empty allowed: every sample then has pdf 0).
     APSE_FUNC explicit LdRadialMap(const SphericalEllipse<T>& ellipse) noexcept : radial_(ellipse) {}

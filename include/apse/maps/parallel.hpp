@@ -4,7 +4,7 @@
 
 /// @file maps/parallel.hpp
 /// `ParallelMap<T>`: the paper's parallel map (authors' code: `cylindrical`; Ureña's
-/// construction), MATH.md §5 — u1 picks a slice (a great circle through ±x, the major axis) by
+/// construction), docs/math.md §5 — u1 picks a slice (a great circle through ±x, the major axis) by
 /// inverting the cumulative area, u2 a point uniformly along the slice (Archimedes). Continuous
 /// on the closed square; the edges u1 = 0 and u1 = 1 collapse to the two ends of the minor axis.
 
@@ -40,7 +40,7 @@ template <class T> APSE_FUNC T parallel_guess(T g, T beta, T w) noexcept {
 
 }  // namespace detail
 
-/// Parallel area-preserving map of the unit square onto a spherical ellipse (MATH.md §5).
+/// Parallel area-preserving map of the unit square onto a spherical ellipse (docs/math.md §5).
 ///
 /// Construction precomputes the solid angle (one R_J). Each sample folds u1 onto one half of the
 /// ellipse, solves the cumulative-area equation for the distance e = beta − psi of the slice from
@@ -51,8 +51,8 @@ template <class T> APSE_FUNC T parallel_guess(T g, T beta, T w) noexcept {
 /// error <= 1e-14 (double) / 1e-6 (float) relative to Omega/2. Trivially copyable.
 template <class T> class ParallelMap {
 public:
-    using vec2 = glm::vec<2, T>;
-    using vec3 = glm::vec<3, T>;
+    using vec2 = glm::vec<2, T>;  ///< a point of the unit square
+    using vec3 = glm::vec<3, T>;  ///< a 3-D vector (direction, point or normal)
 
     /// Builds the map for `ellipse` (empty allowed: every sample then has pdf 0).
     APSE_FUNC explicit ParallelMap(const SphericalEllipse<T>& ellipse) noexcept
@@ -74,7 +74,7 @@ public:
     /// Solid angle Omega of the ellipse (steradians); 0 when empty.
     APSE_FUNC T solid_angle() const noexcept { return valid_ ? omega_ : T(0); }
 
-    /// Direction for the point u of the unit square, MATH.md §5: world-space unit vector inside
+    /// Direction for the point u of the unit square, docs/math.md §5: world-space unit vector inside
     /// the ellipse, pdf = 1/Omega (solid angle). u is clamped into [0, 1]^2; a NaN coordinate or
     /// an empty ellipse gives pdf 0 (and the centre direction). `iterations` receives the number
     /// of inversion iterations (detail/inversion.hpp).
@@ -161,7 +161,7 @@ public:
     /// The per-ellipse constants of the cumulative areas (building block).
     APSE_FUNC const detail::EllipseAreas<T>& areas() const noexcept { return areas_; }
 
-    /// Half-area I(psi) between the slices 0 and psi in [0, beta] (MATH.md §5 I(psi),
+    /// Half-area I(psi) between the slices 0 and psi in [0, beta] (docs/math.md §5 I(psi),
     /// cancellation-free; for tests and diagnostics). Omega_p(psi) = Omega/2 ± I(|psi|).
     APSE_FUNC T half_area(T psi) const noexcept {
         return areas_.parallel_half_area(areas_.parallel_point(clamp(beta_ - psi, T(0), beta_)));

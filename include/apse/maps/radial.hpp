@@ -3,7 +3,7 @@
 #pragma once
 
 /// @file maps/radial.hpp
-/// `RadialMap<T>`: the paper's radial map (authors' code: `polar`), MATH.md §4 — u1 picks the
+/// `RadialMap<T>`: the paper's radial map (authors' code: `polar`), docs/math.md §4 — u1 picks the
 /// azimuth by inverting the cumulative area, u2 the polar angle uniformly in solid angle along
 /// the wedge. Area-preserving; continuous on the open square except that u1 = 0 and u1 = 1 meet
 /// on the major axis (+x) and the whole edge u2 = 0 maps to the centre.
@@ -22,7 +22,7 @@
 
 namespace apse {
 
-/// Radial area-preserving map of the unit square onto a spherical ellipse (MATH.md §4).
+/// Radial area-preserving map of the unit square onto a spherical ellipse (docs/math.md §4).
 ///
 /// Construction precomputes the solid angle (one R_J) and the constants of the cumulative area.
 /// Each sample folds u1 onto a quadrant, solves Omega_r(tau) = f Omega/4 for the orthographic
@@ -35,8 +35,8 @@ namespace apse {
 /// Trivially copyable (pass it to kernels by value).
 template <class T> class RadialMap {
 public:
-    using vec2 = glm::vec<2, T>;
-    using vec3 = glm::vec<3, T>;
+    using vec2 = glm::vec<2, T>;  ///< a point of the unit square
+    using vec3 = glm::vec<3, T>;  ///< a 3-D vector (direction, point or normal)
 
     /// Builds the map for `ellipse` (any SphericalEllipse, empty included: then every sample has
     /// pdf 0).
@@ -58,7 +58,7 @@ public:
     /// Solid angle Omega of the ellipse (steradians); 0 when empty.
     APSE_FUNC T solid_angle() const noexcept { return valid_ ? omega_ : T(0); }
 
-    /// Direction for the point u of the unit square, MATH.md §4: world-space unit vector inside
+    /// Direction for the point u of the unit square, docs/math.md §4: world-space unit vector inside
     /// the ellipse, pdf = 1/Omega (solid angle). u is clamped into [0, 1]^2 (u = 1 is the
     /// square's closed edge); a NaN coordinate or an empty ellipse gives pdf 0 (and the centre
     /// direction). `iterations` receives the number of inversion iterations (0 for the exact
@@ -151,7 +151,7 @@ public:
     /// kappa = cos(alpha/2)/cos(beta/2), the Lambert guess's ratio (building block).
     APSE_FUNC T kappa() const noexcept { return kappa_; }
 
-    /// Cumulative area of the first quadrant up to the azimuth phi in [0, pi/2] (MATH.md §4
+    /// Cumulative area of the first quadrant up to the azimuth phi in [0, pi/2] (docs/math.md §4
     /// Omega_r(phi), cancellation-free; for tests and diagnostics).
     APSE_FUNC T quadrant_area(T phi) const noexcept {
         const T c = std::cos(phi), s = std::sin(phi);

@@ -4,7 +4,7 @@
 
 /// @file maps/tabulated.hpp
 /// `TabulatedMap<T>` and `TabulatedLdRadialMap<T>`: the paper's tabulated radial / LD-radial
-/// variants (authors' code: `polartab` / `concentrictab`, MATH.md §6), redone so that they are
+/// variants (authors' code: `polartab` / `concentrictab`, docs/math.md §6), redone so that they are
 /// **unbiased**: the pdf they report is exactly the density they draw from (the authors' version
 /// rejects samples outside the ellipse, counts them as zero and reports 1/Omega: biased, §6, §11.4).
 ///
@@ -109,7 +109,7 @@ APSE_FUNC void tabulated_fill_row(float* row, int bins, double alpha, double bet
 
 }  // namespace detail
 
-/// The tabulation table shared by all TabulatedMap / TabulatedLdRadialMap instances (MATH.md §6,
+/// The tabulation table shared by all TabulatedMap / TabulatedLdRadialMap instances (docs/math.md §6,
 /// redone unbiased; maps/tabulated.hpp file comment): Bins + 1 CDF entries in lambda for each of
 /// AlphaNodes × RatioNodes shapes: sqrt(cos alpha) = 1 − i/(AlphaNodes − 1) (nodes dense near the
 /// hemisphere, where the density changes fastest with the shape), beta = alpha j/(RatioNodes − 1).
@@ -146,7 +146,7 @@ template <int Bins, int AlphaNodes, int RatioNodes> struct TabulationTableN {
 /// 0.44 % over all shapes (docs/tabulated.md; the error is ~0.56/N, set by the bins).
 using TabulationTable = TabulationTableN<128, 17, 9>;
 
-/// Tabulated radial map (MATH.md §4 + §6, unbiased; file comment): u1 picks the quadrant and the
+/// Tabulated radial map (docs/math.md §4 + §6, unbiased; file comment): u1 picks the quadrant and the
 /// Lambert anomaly from the blended table CDF, u2 the polar angle exactly as RadialMap. Not
 /// area-preserving (nearly: pdf Omega within the table's error of 1), but the reported pdf is
 /// exactly its density. Per shading point: no elliptic integral, no Omega, no library call (the
@@ -155,8 +155,8 @@ using TabulationTable = TabulationTableN<128, 17, 9>;
 /// (the table must outlive the map). Trivially copyable.
 template <class T> class TabulatedMap {
 public:
-    using vec2 = glm::vec<2, T>;
-    using vec3 = glm::vec<3, T>;
+    using vec2 = glm::vec<2, T>;  ///< a point of the unit square
+    using vec3 = glm::vec<3, T>;  ///< a 3-D vector (direction, point or normal)
 
     /// Builds the map for `ellipse` with the table `table` (set-up: the ellipse's cumulative-area
     /// constants, kappa, the four blended rows and their weights; one sqrt and a few divisions).
@@ -361,14 +361,14 @@ private:
     bool valid_;
 };
 
-/// Tabulated LD-radial map (MATH.md §4 + §6, unbiased): the Shirley–Chiu concentric map first,
+/// Tabulated LD-radial map (docs/math.md §4 + §6, unbiased): the Shirley–Chiu concentric map first,
 /// then TabulatedMap with u1 = angle/(2 pi), u2 = radius^2 (as LdRadialMap over RadialMap).
 /// Continuous on the closed square; the same density, pdf, accuracy and table as TabulatedMap.
 /// Trivially copyable.
 template <class T> class TabulatedLdRadialMap {
 public:
-    using vec2 = glm::vec<2, T>;
-    using vec3 = glm::vec<3, T>;
+    using vec2 = glm::vec<2, T>;  ///< a point of the unit square
+    using vec3 = glm::vec<3, T>;  ///< a 3-D vector (direction, point or normal)
 
     /// Builds the map (as TabulatedMap; empty ellipse or invalid view: pdf 0 everywhere).
     APSE_FUNC TabulatedLdRadialMap(const SphericalEllipse<T>& ellipse, const TabulationView& table) noexcept
