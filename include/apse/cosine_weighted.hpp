@@ -175,31 +175,27 @@ APSE_FUNC bool fill_parallel_warp(const ParallelMap<T>& map, const glm::vec<3, T
 /// and the vertex cosines.
 template <class Map> struct CosineTraits;
 
-template <class T> struct CosineTraits<RadialMap<T>> {
-    using Base = RadialMap<T>;
+/// The traits shared by the two radial-family maps the warp acts on (RadialMap, TabulatedMap):
+/// the vertex cosines come from their cumulative areas and kappa alike.
+template <class BaseMap, class T> struct RadialWarpTraits {
+    using Base = BaseMap;
     static constexpr bool ld = false;
     static constexpr int cols = 8, rows = 4;
-    static APSE_FUNC const Base& base(const RadialMap<T>& m) noexcept { return m; }
-    static APSE_FUNC bool valid(const Base& b) noexcept { return b.solid_angle() > T(0); }
+    static APSE_FUNC const Base& base(const Base& m) noexcept { return m; }
     template <int C, int R>
     static APSE_FUNC bool fill(const Base& b, const glm::vec<3, T>& n, BilinearWarp<T, C, R>& w) noexcept {
         return fill_radial_warp<T, C, R>(b.areas(), b.kappa(), n, w);
     }
+};
+template <class T> struct CosineTraits<RadialMap<T>> : RadialWarpTraits<RadialMap<T>, T> {
+    static APSE_FUNC bool valid(const RadialMap<T>& b) noexcept { return b.solid_angle() > T(0); }
 };
 template <class T> struct CosineTraits<LdRadialMap<T>> : CosineTraits<RadialMap<T>> {
     static constexpr bool ld = true;
     static APSE_FUNC const RadialMap<T>& base(const LdRadialMap<T>& m) noexcept { return m.radial(); }
 };
-template <class T> struct CosineTraits<TabulatedMap<T>> {
-    using Base = TabulatedMap<T>;
-    static constexpr bool ld = false;
-    static constexpr int cols = 8, rows = 4;
-    static APSE_FUNC const Base& base(const TabulatedMap<T>& m) noexcept { return m; }
-    static APSE_FUNC bool valid(const Base& b) noexcept { return !b.empty(); }
-    template <int C, int R>
-    static APSE_FUNC bool fill(const Base& b, const glm::vec<3, T>& n, BilinearWarp<T, C, R>& w) noexcept {
-        return fill_radial_warp<T, C, R>(b.areas(), b.kappa(), n, w);
-    }
+template <class T> struct CosineTraits<TabulatedMap<T>> : RadialWarpTraits<TabulatedMap<T>, T> {
+    static APSE_FUNC bool valid(const TabulatedMap<T>& b) noexcept { return !b.empty(); }
 };
 template <class T> struct CosineTraits<TabulatedLdRadialMap<T>> : CosineTraits<TabulatedMap<T>> {
     static constexpr bool ld = true;
