@@ -24,7 +24,7 @@
 
 #include <apse/baselines/area.hpp>
 #include <apse/baselines/gamito.hpp>
-#include <apse/baselines/rectangle.hpp>
+#include <apse/spherical_rectangle.hpp>
 #include <apse/cosine_weighted.hpp>
 #include <apse/maps/ld_radial.hpp>
 #include <apse/maps/parallel.hpp>

@@ -1,6 +1,8 @@
 // Calls the public API in a translation unit compiled with -fno-exceptions: proves no header
 // throws, catches or needs exception support. Returns non-zero if a value is not finite.
 #include <apse/apse.hpp>
+#include <apse/baselines/area.hpp>
+#include <apse/baselines/gamito.hpp>
 
 #include <cstdio>
 

@@ -5,7 +5,7 @@
 // condition number kappa = 1 + (|corner − o| + |edges|) / (distance to the plane): the inputs are
 // float32-exact, but forming the plane's normal and the offset corner − o in T rounds them by
 // O(eps) relative to those lengths, which moves the solid angle by O(eps·kappa).
-#include <apse/baselines/rectangle.hpp>
+#include <apse/spherical_rectangle.hpp>
 
 #include "support/statistics.hpp"
 

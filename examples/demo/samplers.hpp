@@ -13,6 +13,8 @@
 #include <vector>
 
 #include <apse/apse.hpp>
+#include <apse/baselines/area.hpp>
+#include <apse/baselines/gamito.hpp>
 
 namespace demo {
 

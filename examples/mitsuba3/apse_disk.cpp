@@ -23,6 +23,7 @@
 // DiskAreaSampler.
 
 #include <apse/apse.hpp>
+#include <apse/baselines/area.hpp>
 
 #include <cmath>
 #include <string>

@@ -3,7 +3,11 @@
 #pragma once
 
 /// @file apse.hpp
-/// The umbrella header: includes every public apse header.
+/// The umbrella header: every public sampler and its building blocks — projection, the maps, the
+/// tabulated maps, cosine-weighted sampling, DiskLight, the spherical-rectangle sampler and the
+/// elliptic integrals. The baselines apse is measured against (uniform-by-area disk sampling,
+/// Gamito's rejection) are not included: `#include <apse/baselines/area.hpp>` /
+/// `<apse/baselines/gamito.hpp>` for them.
 
 #include "config.hpp"
 #include "math.hpp"
@@ -11,9 +15,7 @@
 #include "sample.hpp"
 #include "spherical_ellipse.hpp"
 #include "projection.hpp"
-#include "baselines/area.hpp"
-#include "baselines/rectangle.hpp"
-#include "baselines/gamito.hpp"
+#include "spherical_rectangle.hpp"
 #include "maps/radial.hpp"
 #include "maps/ld_radial.hpp"
 #include "maps/parallel.hpp"

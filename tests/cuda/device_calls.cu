@@ -2,6 +2,8 @@
 // GPU is needed). Each section calls one header's functions in float and double; when a header
 // gains a public function, add the call here.
 #include <apse/apse.hpp>
+#include <apse/baselines/area.hpp>
+#include <apse/baselines/gamito.hpp>
 
 #include <cstdio>
 

@@ -3,7 +3,7 @@
 // angle in [0, 2 pi]; a finite unit direction and a finite pdf >= 0; for pdf > 0, a finite
 // point at a finite positive distance with rectangle coordinates in [0, 1]² (rounding-aware), an
 // inverse inside the square and finite pdf / locate values.
-#include <apse/baselines/rectangle.hpp>
+#include <apse/spherical_rectangle.hpp>
 
 #include "fuzz_common.hpp"
 

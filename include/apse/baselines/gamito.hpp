@@ -24,7 +24,7 @@
 #include "../math.hpp"
 #include "../projection.hpp"
 #include "../sample.hpp"
-#include "rectangle.hpp"
+#include "../spherical_rectangle.hpp"
 
 namespace apse {
 namespace detail {

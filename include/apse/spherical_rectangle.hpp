@@ -2,11 +2,11 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
-/// @file baselines/rectangle.hpp
+/// @file spherical_rectangle.hpp
 /// Uniform sampling of the solid angle subtended by a planar rectangle: the area-preserving map
 /// of Ureña, Fajardo & King, "An Area-Preserving Parametrization for Spherical Rectangles"
-/// (EGSR 2013), docs/math.md §7. It is the building block of the Gamito baseline (gamito.hpp) and a
-/// rectangle-light sampler in its own right.
+/// (EGSR 2013), docs/math.md §7. A rectangle-light sampler in its own right, and the building block of
+/// the Gamito baseline (baselines/gamito.hpp).
 ///
 /// The map is the published one — u1 picks the column x of the rectangle whose left part
 /// [x0, x] has solid angle u1·S, u2 is uniform in h = y / sqrt(x² + y² + d²) along that column —
@@ -27,11 +27,11 @@
 
 #include <cmath>
 
-#include "../config.hpp"
-#include "../detail/glm.hpp"
-#include "../detail/vector.hpp"
-#include "../math.hpp"
-#include "../sample.hpp"
+#include "config.hpp"
+#include "detail/glm.hpp"
+#include "detail/vector.hpp"
+#include "math.hpp"
+#include "sample.hpp"
 
 namespace apse {
 
