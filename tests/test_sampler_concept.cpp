@@ -73,25 +73,25 @@ enum class Shape { disk, square };
 
 struct Radial {
     static constexpr const char* name = "RadialMap";
-    static constexpr bool invertible = true, has_solid_angle = true, counts = true, cosine_ok = true;
+    static constexpr bool invertible = true, has_solid_angle = true, counts = true;
     static constexpr Shape shape = Shape::disk;
     template <class T> static auto make(const Scene<T>& s) { return apse::RadialMap<T>(ellipse_of(s)); }
 };
 struct LdRadial {
     static constexpr const char* name = "LdRadialMap";
-    static constexpr bool invertible = true, has_solid_angle = true, counts = true, cosine_ok = true;
+    static constexpr bool invertible = true, has_solid_angle = true, counts = true;
     static constexpr Shape shape = Shape::disk;
     template <class T> static auto make(const Scene<T>& s) { return apse::LdRadialMap<T>(ellipse_of(s)); }
 };
 struct Parallel {
     static constexpr const char* name = "ParallelMap";
-    static constexpr bool invertible = true, has_solid_angle = true, counts = true, cosine_ok = true;
+    static constexpr bool invertible = true, has_solid_angle = true, counts = true;
     static constexpr Shape shape = Shape::disk;
     template <class T> static auto make(const Scene<T>& s) { return apse::ParallelMap<T>(ellipse_of(s)); }
 };
 struct Tabulated {  // no solid_angle(): the tabulated maps never compute Omega (README)
     static constexpr const char* name = "TabulatedMap";
-    static constexpr bool invertible = true, has_solid_angle = false, counts = true, cosine_ok = true;
+    static constexpr bool invertible = true, has_solid_angle = false, counts = true;
     static constexpr Shape shape = Shape::disk;
     template <class T> static auto make(const Scene<T>& s) {
         return apse::TabulatedMap<T>(ellipse_of(s), apse_test::default_table().view());
@@ -99,7 +99,7 @@ struct Tabulated {  // no solid_angle(): the tabulated maps never compute Omega 
 };
 struct TabulatedLdRadial {
     static constexpr const char* name = "TabulatedLdRadialMap";
-    static constexpr bool invertible = true, has_solid_angle = false, counts = true, cosine_ok = true;
+    static constexpr bool invertible = true, has_solid_angle = false, counts = true;
     static constexpr Shape shape = Shape::disk;
     template <class T> static auto make(const Scene<T>& s) {
         return apse::TabulatedLdRadialMap<T>(ellipse_of(s), apse_test::default_table().view());
@@ -107,7 +107,7 @@ struct TabulatedLdRadial {
 };
 template <class Plain> struct Cosine {  // CosineWeighted over a map, with the scene's receiver normal
     static constexpr const char* name = "CosineWeighted";
-    static constexpr bool invertible = true, has_solid_angle = false, counts = false, cosine_ok = false;
+    static constexpr bool invertible = true, has_solid_angle = false, counts = false;
     static constexpr Shape shape = Shape::disk;
     template <class T> static auto make(const Scene<T>& s) {
         using Map = decltype(Plain::make(s));
@@ -116,7 +116,7 @@ template <class Plain> struct Cosine {  // CosineWeighted over a map, with the s
 };
 struct Area {  // from the light's stored frame
     static constexpr const char* name = "DiskAreaSampler(o, frame)";
-    static constexpr bool invertible = true, has_solid_angle = false, counts = false, cosine_ok = false;
+    static constexpr bool invertible = true, has_solid_angle = false, counts = false;
     static constexpr Shape shape = Shape::disk;
     template <class T> static auto make(const Scene<T>& s) {
         return apse::DiskAreaSampler<T>(s.o, apse::DiskFrame<T>::make(s.c, s.n, s.r));
@@ -124,25 +124,25 @@ struct Area {  // from the light's stored frame
 };
 struct AreaDirect {  // the convenience constructor
     static constexpr const char* name = "DiskAreaSampler(o, c, n, r)";
-    static constexpr bool invertible = true, has_solid_angle = false, counts = false, cosine_ok = false;
+    static constexpr bool invertible = true, has_solid_angle = false, counts = false;
     static constexpr Shape shape = Shape::disk;
     template <class T> static auto make(const Scene<T>& s) { return apse::DiskAreaSampler<T>(s.o, s.c, s.n, s.r); }
 };
 struct GamitoSingle {  // no invert(): rejection is not a bijection; no solid_angle(): never computed
     static constexpr const char* name = "GamitoSingleShot";
-    static constexpr bool invertible = false, has_solid_angle = false, counts = false, cosine_ok = false;
+    static constexpr bool invertible = false, has_solid_angle = false, counts = false;
     static constexpr Shape shape = Shape::disk;
     template <class T> static auto make(const Scene<T>& s) { return apse::GamitoSingleShot<T>(s.o, s.c, s.n, s.r); }
 };
 struct GamitoRetry {
     static constexpr const char* name = "GamitoRetry";
-    static constexpr bool invertible = false, has_solid_angle = true, counts = false, cosine_ok = false;
+    static constexpr bool invertible = false, has_solid_angle = true, counts = false;
     static constexpr Shape shape = Shape::disk;
     template <class T> static auto make(const Scene<T>& s) { return apse::GamitoRetry<T>(s.o, s.c, s.n, s.r, 8); }
 };
 struct Rectangle {  // the disk's circumscribed square
     static constexpr const char* name = "SphericalRectangle";
-    static constexpr bool invertible = true, has_solid_angle = true, counts = false, cosine_ok = false;
+    static constexpr bool invertible = true, has_solid_angle = true, counts = false;
     static constexpr Shape shape = Shape::square;
     template <class T> static auto make(const Scene<T>& s) {
         return apse::SphericalRectangle<T>::from_center(s.o, s.c, V3<T>(s.r, 0, 0), V3<T>(0, s.r, 0));

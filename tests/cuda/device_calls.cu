@@ -91,6 +91,11 @@ __global__ void projection_kernel(const T* in, T* out, int n) {
 
 // The maps and disk_light get their own kernel (each sample() inlines an R_J and the inversion
 // loop: kept out of the big kernel so that ptxas compiles moderate functions). One call each.
+// sample_with_diagnostics reaches the maps' counting sample under nvcc too (sample.hpp's detection)
+static_assert(apse::counts_iterations_v<apse::RadialMap<float>> && apse::counts_iterations_v<apse::TabulatedLdRadialMap<double>> &&
+                  !apse::counts_iterations_v<apse::DiskAreaSampler<float>>,
+              "counts_iterations under nvcc");
+
 template <class T>
 __global__ void maps_disk_light_kernel(const T* in, T* out, int n) {
     const int i = blockIdx.x * blockDim.x + threadIdx.x;
