@@ -14,7 +14,9 @@
 // Names: <sampler>/<float|double>/<samples>. Counters (means per sample):
 //   accepted   — fraction of samples with pdf > 0 (Gamito's acceptance; 1 for the maps);
 //   mean_iterations — inversion iterations (RadialMap, LdRadialMap, ParallelMap) or table-walk
-//                     steps (TabulatedMap, TabulatedLdRadialMap), from sample(u, iterations).
+//                     steps (TabulatedMap, TabulatedLdRadialMap), from apse::sample_with_diagnostics
+//                     (every sampler is called through it; the counter is reported for the
+//                     samplers that count, apse::counts_iterations).
 // The JSON context records the compiler and CPU; tools/bench_table.py makes the README's table:
 //   bench_samplers --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
 //                  --benchmark_min_time=0.2 --benchmark_enable_random_interleaving=true
@@ -38,8 +40,6 @@
 
 #include <memory>
 #include <string>
-#include <type_traits>
-#include <utility>
 
 namespace {
 
@@ -154,14 +154,6 @@ constexpr char cosine_tabulated[] = "cosine_tabulated";
 constexpr char cosine_tabulated_ld_radial[] = "cosine_tabulated_ld_radial";
 constexpr char cosine_tabulated_ld_radial_8x2[] = "cosine_tabulated_ld_radial_8x2";
 
-/// True if S has the iteration-counting overload sample(u, int& iterations).
-template <class S, class U>
-using sample_with_iterations =
-    decltype(std::declval<const S&>().sample(std::declval<const U&>(), std::declval<int&>()));
-template <class S, class U, class = void> struct counts_iterations : std::false_type {};
-template <class S, class U>
-struct counts_iterations<S, U, std::void_t<sample_with_iterations<S, U>>> : std::true_type {};
-
 /// The set-up alone for one fresh shading point per benchmark iteration, every field of the
 /// result kept observable (cost breakdown).
 template <class Factory, class T> void bm_setup(benchmark::State& state) {
@@ -180,7 +172,6 @@ template <class Factory, class T, int Samples> void bm_sampler(benchmark::State&
     const DiskConfigs<T>& s = apse_bench::disk_configs<T>();
     const apse::TabulationView view = table().view();
     using Sampler = decltype(Factory::make(s.disks[0], view));
-    constexpr bool has_iterations = counts_iterations<Sampler, glm::vec<2, T>>::value;
     std::size_t i = 0, k = 0;
     long iterations = 0, accepted = 0;
     for (auto _ : state) {
@@ -189,14 +180,9 @@ template <class Factory, class T, int Samples> void bm_sampler(benchmark::State&
         T acc = T(0);
         for (int j = 0; j < Samples; ++j) {
             const glm::vec<2, T>& u = s.u[k++ & (DiskConfigs<T>::u_count - 1)];
-            apse::DirectionSample<T> smp;
-            if constexpr (has_iterations) {
-                int it = 0;
-                smp = sampler.sample(u, it);
-                iterations += it;
-            } else {
-                smp = sampler.sample(u);
-            }
+            apse::SampleDiagnostics diag{};
+            const auto smp = apse::sample_with_diagnostics(sampler, u, diag);
+            iterations += diag.iterations;
             accepted += smp.pdf > T(0);
             acc += smp.direction.x + smp.pdf;
         }
@@ -204,7 +190,7 @@ template <class Factory, class T, int Samples> void bm_sampler(benchmark::State&
     }
     const double samples = double(state.iterations()) * Samples;
     state.counters["accepted"] = benchmark::Counter(double(accepted) / samples);
-    if (has_iterations)
+    if (apse::counts_iterations_v<Sampler>)
         state.counters["mean_iterations"] = benchmark::Counter(double(iterations) / samples);
 }
 

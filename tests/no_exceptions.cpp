@@ -31,7 +31,8 @@ static bool baselines_rectangle_gamito_ok() {
     const T values[] = {
         r.solid_angle(), r.sample(u).pdf, r.pdf(p.direction), r.invert(p.direction).x, r.locate(p.direction).distance,
         apse::SphericalRectangle<T>::from_center(o, c, ex, ey).solid_angle(),
-        g1.sample(u).pdf, g1.pdf(p.direction), g8.sample(u).pdf, g8.pdf(p.direction), g8.disk_solid_angle(),
+        g1.sample(u).pdf, g1.pdf(p.direction), g8.sample(u).pdf, g8.pdf(p.direction), g8.solid_angle(),
+        apse::point_on_plane(r.sample(u), o, c, n).distance,
     };
     for (T v : values)
         if (!apse::is_finite(v) || !(v >= T(0))) return false;
@@ -48,9 +49,9 @@ static bool maps_disk_light_ok() {
     const apse::ParallelMap<T> parallel(e);
     const apse::DiskLight<T> light(V(0), V(T(0.5), T(0), T(-1)), V(0, 0, 1), T(1), apse::DiskMap::parallel);
     const auto s = light.sample(u);
-    int it = 0;
+    apse::SampleDiagnostics diag{0};
     const T values[] = {
-        radial.sample(u).pdf, radial.sample(u, it).pdf, radial.pdf(s.direction), radial.invert(s.direction).x,
+        radial.sample(u).pdf, apse::sample_with_diagnostics(radial, u, diag).pdf, radial.pdf(s.direction), radial.invert(s.direction).x,
         radial.solid_angle(), radial.quadrant_area(T(0.5)), ld.sample(u).pdf, ld.pdf(s.direction),
         ld.invert(s.direction).y, parallel.sample(u).pdf, parallel.pdf(s.direction), parallel.invert(s.direction).x,
         parallel.half_area(T(0.1)), s.pdf, s.distance, light.pdf(s.direction), light.invert(s.direction).x,
@@ -59,7 +60,7 @@ static bool maps_disk_light_ok() {
     };
     for (T v : values)
         if (!apse::is_finite(v) || !(v >= T(0))) return false;
-    return s.pdf > T(0);
+    return s.pdf > T(0) && !radial.empty() && !ld.empty() && !parallel.empty();
 }
 
 template <class T>
@@ -98,8 +99,8 @@ static bool tabulated_ok() {
     const apse::TabulatedMap<T> tab(e, table.view());
     const apse::TabulatedLdRadialMap<T> tld(e, table.view());
     const auto s = tab.sample(u);
-    int it = 0;
-    const T with_steps = tab.sample(u, it).pdf + tld.sample(u, it).pdf;
+    apse::SampleDiagnostics diag{0};
+    const T with_steps = apse::sample_with_diagnostics(tab, u, diag).pdf + apse::sample_with_diagnostics(tld, u, diag).pdf;
     const T values[] = {s.pdf, tab.pdf(s.direction), tab.invert(s.direction).x, tld.sample(u).pdf,
                         tld.pdf(s.direction), tld.invert(s.direction).y, tld.radial().ellipse().alpha(),
                         T(apse::detail::tabulated_lambda_density(0.5, 0.5, 0.6, 0.9)), with_steps};

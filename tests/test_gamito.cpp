@@ -162,7 +162,7 @@ TEMPLATE_TEST_CASE("gamito bounding square and disk solid angles", "[gamito]", f
         REQUIRE_FALSE(single.empty());
         CHECK(std::fabs(double(single.bounding_rectangle().solid_angle()) / c.omega_square - 1) <= 8 * eps * kappa);
         CHECK(single.bounding_rectangle().solid_angle() == retry.bounding_rectangle().solid_angle());
-        CHECK(std::fabs(double(retry.disk_solid_angle()) / c.omega - 1) <= 64 * eps * kappa);
+        CHECK(std::fabs(double(retry.solid_angle()) / c.omega - 1) <= 64 * eps * kappa);
         CHECK(std::fabs(double(retry.acceptance()) / (c.omega / c.omega_square) - 1) <= 64 * eps * kappa);
         CHECK(retry.max_attempts() == 8);
         CHECK(std::fabs(double(retry.success_probability()) - (1 - std::pow(1 - c.omega / c.omega_square, 8))) <= 64 * eps * kappa);

@@ -308,8 +308,9 @@ TEMPLATE_TEST_CASE("degenerate and bad input: pdf 0 or a valid direction, never 
             for_each_map(x, [&](const std::string& name, const auto& map) {
                 for (int i = 0; i <= 8; ++i)
                     for (int j = 0; j <= 8; ++j) {
-                        int it = 0;
-                        const auto s = map.sample(Vec2<T>(T(i / 8.0), T(j / 8.0)), it);
+                        apse::SampleDiagnostics diag{-1};
+                        const auto s = apse::sample_with_diagnostics(map, Vec2<T>(T(i / 8.0), T(j / 8.0)), diag);
+                        const int it = diag.iterations;
                         INFO(name << " tan alpha " << ta << " tan beta " << tb << " u " << i / 8.0 << " " << j / 8.0);
                         CHECK(finite3(s.direction));
                         CHECK(apse::is_finite(s.pdf));

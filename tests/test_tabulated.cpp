@@ -404,8 +404,9 @@ TEMPLATE_TEST_CASE("tabulated: table walk is short", "[tabulated][properties]", 
             if (e.empty()) continue;
             const apse::TabulatedMap<T> map(e, default_table().view());
             for (int i = 0; i < 200; ++i) {
-                int it = -1;
-                const auto s = map.sample(Vec2<T>(rng.uniform<T>(), rng.uniform<T>()), it);
+                apse::SampleDiagnostics diag{-1};
+                const auto s = apse::sample_with_diagnostics(map, Vec2<T>(rng.uniform<T>(), rng.uniform<T>()), diag);
+                const int it = diag.iterations;
                 REQUIRE(s.pdf > 0);
                 steps += it;
                 ++count;

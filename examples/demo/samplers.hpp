@@ -6,7 +6,8 @@
 /// The samplers compared, each wrapped in a *factory* that builds the per-shading-point sampler
 /// (the set-up a renderer does once per shading point) from the shading point, the receiver's
 /// normal (zero in the medium, where there is no surface) and the light, and a uniform
-/// `LightSample` result: direction, solid-angle pdf (0 = no sample: skip it), distance to the disk.
+/// `LightSample` result (apse::PointSample): direction, solid-angle pdf (0 = no sample: skip it),
+/// point on the disk and distance to it.
 
 #include <array>
 #include <memory>
@@ -27,12 +28,9 @@ struct Disk {
     float radius, Le;
 };
 
-/// One light sample from a shading point.
-struct LightSample {
-    vec3 direction;
-    float pdf;       ///< solid angle; 0 = no sample
-    float distance;  ///< to the disk along direction
-};
+/// One light sample from a shading point: direction, pdf (solid angle; 0 = no sample), point on
+/// the disk, distance to it.
+using LightSample = apse::PointSample<float>;
 
 enum class Kind { area, gamito, radial, ld_radial, parallel, tabulated, cosine };
 
@@ -54,21 +52,15 @@ inline std::vector<Kind> all_kinds() {
     return {Kind::area, Kind::gamito, Kind::radial, Kind::ld_radial, Kind::parallel, Kind::tabulated, Kind::cosine};
 }
 
-/// Wraps a sampler with `sample(u) -> DirectionSample<float>` into LightSample (the distance is
-/// the ray–plane distance, the same computation for every sampler).
+/// Wraps a sampler with `sample(u) -> DirectionSample<float>` into LightSample (the point where
+/// the sample's ray meets the disk's plane, apse::point_on_plane, the same for every sampler).
 template <class S> struct Wrapped {
     S s;
-    vec3 to_center;  // center − o
-    vec3 normal;
-    LightSample sample(const vec2& u) const {
-        const apse::DirectionSample<float> d = s.sample(u);
-        const float t = glm::dot(to_center, normal) / glm::dot(d.direction, normal);
-        if (!(d.pdf > 0.0f) || !(t > 0.0f)) return {d.direction, 0.0f, 0.0f};
-        return {d.direction, d.pdf, t};
-    }
+    vec3 o, center, normal;
+    LightSample sample(const vec2& u) const { return apse::point_on_plane(s.sample(u), o, center, normal); }
 };
 template <class S> Wrapped<S> wrap(const S& s, const vec3& o, const Disk& L) {
-    return Wrapped<S>{s, L.center - o, L.normal};
+    return Wrapped<S>{s, o, L.center, L.normal};
 }
 
 /// Per-kind factories: `(o, receiver normal, disk) -> sampler with sample(u) -> LightSample`.

@@ -25,10 +25,6 @@
 namespace apse {
 namespace detail {
 
-template <class T> APSE_FUNC constexpr bool is_real_type() noexcept {
-    return sizeof(T) == sizeof(float) || sizeof(T) == sizeof(double);
-}
-
 /// Working precision of each function for T = float: float itself ("native") or double
 /// ("promoted"). double always works in double. The choice and its measurements are in
 /// docs/elliptic.md; every function meets its budget natively, so float stays float (fast on

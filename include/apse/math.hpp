@@ -10,10 +10,20 @@
 #include <cstdint>
 #include <cstring>
 #include <limits>
+#include <type_traits>
 
 #include "config.hpp"
 
 namespace apse {
+namespace detail {
+
+/// True for the two types apse computes in, float and double (every class template and function
+/// template of apse rejects any other T with a static_assert naming it).
+template <class T> APSE_FUNC constexpr bool is_real_type() noexcept {
+    return std::is_same<T, float>::value || std::is_same<T, double>::value;
+}
+
+}  // namespace detail
 
 /// pi in type T (rounded to nearest).
 template <class T> constexpr T pi_v = T(3.141592653589793238462643383279502884L);
@@ -36,7 +46,7 @@ template <class T> APSE_FUNC T quiet_nan() noexcept {
 
 /// Machine epsilon of type T (float or double), usable in host and device code.
 template <class T> APSE_FUNC constexpr T epsilon() noexcept {
-    static_assert(sizeof(T) == sizeof(float) || sizeof(T) == sizeof(double), "float or double");
+    static_assert(detail::is_real_type<T>(), "apse: T must be float or double");
     return sizeof(T) == sizeof(float) ? T(0x1p-23) : T(0x1p-52);
 }
 
@@ -46,7 +56,7 @@ namespace detail {
 /// keeps is_nan / is_finite true to IEEE 754 under -ffast-math / -ffinite-math-only, where
 /// compilers fold `x != x`, `std::isnan(x)` and `std::isfinite(x)` to constants.
 template <class T> APSE_FUNC auto magnitude_bits(T x) noexcept {
-    static_assert(sizeof(T) == sizeof(float) || sizeof(T) == sizeof(double), "float or double");
+    static_assert(detail::is_real_type<T>(), "apse: T must be float or double");
     if constexpr (sizeof(T) == sizeof(float)) {
 #if defined(__CUDA_ARCH__)
         const std::uint32_t b = std::uint32_t(__float_as_uint(float(x)));

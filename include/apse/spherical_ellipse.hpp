@@ -76,8 +76,7 @@ template <class T> APSE_FUNC void sin_cos_of_atan2(T ta, T tb, SinCos<T>& a, Sin
 /// `cos_alpha = cos_beta = one_minus_m = 1` and the identity frame) stands for degenerate or
 /// invalid input; test it with `empty()` before sampling.
 template <class T> struct SphericalEllipse {
-    static_assert(sizeof(T) == sizeof(float) || sizeof(T) == sizeof(double),
-                  "apse: T must be float or double");
+    static_assert(detail::is_real_type<T>(), "apse: SphericalEllipse<T>: T must be float or double");
     using vec3 = glm::vec<3, T>;  ///< a 3-D vector (direction, point or normal)
 
     vec3 x;  ///< major-axis direction (world space, unit)

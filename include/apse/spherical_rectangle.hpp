@@ -36,13 +36,11 @@
 namespace apse {
 
 /// A point of a rectangle light seen from the shading point o: what `SphericalRectangle::
-/// sample_point` returns for a sample and `SphericalRectangle::locate` for a direction.
-template <class T> struct RectanglePoint {
-    glm::vec<3, T> direction;  ///< world-space unit direction from o towards `point`
-    T pdf;                     ///< density in **solid angle** (1/S); 0 = no sample / not on it
-    glm::vec<3, T> point;      ///< world-space point in the rectangle's plane
-    glm::vec<2, T> st;         ///< rectangle coordinates: point = corner + st.x·edge_x + st.y·edge_y
-    T distance;                ///< |point − o| (world units)
+/// sample_point` returns for a sample and `SphericalRectangle::locate` for a direction — a
+/// PointSample (direction, pdf in **solid angle** (1/S; 0 = no sample / not on it), point,
+/// distance) with the point's rectangle coordinates.
+template <class T> struct RectanglePoint : PointSample<T> {
+    glm::vec<2, T> st;  ///< rectangle coordinates: point = corner + st.x·edge_x + st.y·edge_y
 };
 
 namespace detail {
@@ -167,6 +165,8 @@ APSE_FUNC T rectangle_solid_angle(T x0, T w, T y0, T h, T d) noexcept {
 ///   limit (2e-11 in double).
 /// Trivially copyable, no heap: pass it to kernels by value.
 template <class T> class SphericalRectangle {
+    static_assert(detail::is_real_type<T>(), "apse: SphericalRectangle<T>: T must be float or double");
+
 public:
     using vec2 = glm::vec<2, T>;  ///< a point of the unit square
     using vec3 = glm::vec<3, T>;  ///< a 3-D vector (direction, point or normal)

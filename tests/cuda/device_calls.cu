@@ -50,8 +50,9 @@ __device__ T baseline_rectangle_gamito_calls(T a) {
     s += g1.sample(u).pdf + g1.sample_point(u).st.x + g1.pdf(rp.direction) + (g1.empty() ? T(1) : T(0));
     s += g1.bounding_rectangle().solid_angle();
     s += g8.sample(u).pdf + g8.sample_point(u).st.y + g8.pdf(rp.direction) + (g8.empty() ? T(1) : T(0));
-    s += g8.disk_solid_angle() + g8.acceptance() + g8.success_probability() + T(g8.max_attempts());
+    s += g8.solid_angle() + g8.acceptance() + g8.success_probability() + T(g8.max_attempts());
     s += g8.bounding_rectangle().solid_angle();
+    s += apse::point_on_plane(r.sample(u), o, c, n).distance;
     return s;
 }
 
@@ -92,6 +93,11 @@ __global__ void projection_kernel(const T* in, T* out, int n) {
 
 // The maps and disk_light get their own kernel (each sample() inlines an R_J and the inversion
 // loop: kept out of the big kernel so that ptxas compiles moderate functions). One call each.
+// sample_with_diagnostics reaches the maps' counting sample under nvcc too (sample.hpp's detection)
+static_assert(apse::counts_iterations_v<apse::RadialMap<float>> && apse::counts_iterations_v<apse::TabulatedLdRadialMap<double>> &&
+                  !apse::counts_iterations_v<apse::DiskAreaSampler<float>>,
+              "counts_iterations under nvcc");
+
 template <class T>
 __global__ void maps_disk_light_kernel(const T* in, T* out, int n) {
     const int i = blockIdx.x * blockDim.x + threadIdx.x;
@@ -100,20 +106,23 @@ __global__ void maps_disk_light_kernel(const T* in, T* out, int n) {
     const T a = in[i];
     const glm::vec<2, T> u(a, T(0.6));
     const auto e = apse::project_disk(V(0), V(a, T(0), T(-1)), V(0, 0, 1), T(1));
-    int it = 0;
+    apse::SampleDiagnostics diag{0};
     T s = T(0);
     if (i % 3 == 0) {
         const apse::RadialMap<T> radial(e);
-        const auto d = radial.sample(u, it).direction;
-        s += radial.sample(u).pdf + radial.pdf(d) + radial.invert(d).x + radial.solid_angle() + radial.quadrant_area(a);
+        const auto d = apse::sample_with_diagnostics(radial, u, diag).direction;
+        s += radial.sample(u).pdf + radial.pdf(d) + radial.invert(d).x + radial.solid_angle() + radial.quadrant_area(a) +
+             T(radial.empty() ? 1 : 0);
     } else if (i % 3 == 1) {
         const apse::LdRadialMap<T> ld(e);
-        const auto d = ld.sample(u, it).direction;
-        s += ld.sample(u).pdf + ld.pdf(d) + ld.invert(d).y + ld.solid_angle() + ld.radial().solid_angle();
+        const auto d = apse::sample_with_diagnostics(ld, u, diag).direction;
+        s += ld.sample(u).pdf + ld.pdf(d) + ld.invert(d).y + ld.solid_angle() + ld.radial().solid_angle() +
+             T(ld.empty() ? 1 : 0);
     } else {
         const apse::ParallelMap<T> parallel(e);
-        const auto d = parallel.sample(u, it).direction;
-        s += parallel.sample(u).pdf + parallel.pdf(d) + parallel.invert(d).x + parallel.solid_angle() + parallel.half_area(a);
+        const auto d = apse::sample_with_diagnostics(parallel, u, diag).direction;
+        s += parallel.sample(u).pdf + parallel.pdf(d) + parallel.invert(d).x + parallel.solid_angle() + parallel.half_area(a) +
+             T(parallel.empty() ? 1 : 0);
     }
     const apse::DiskMap m = i % 3 == 0 ? apse::DiskMap::radial : (i % 3 == 1 ? apse::DiskMap::ld_radial : apse::DiskMap::parallel);
     const apse::DiskLight<T> light(V(0), V(a, T(0), T(-1)), V(0, 0, 1), T(1), m);
@@ -121,7 +130,7 @@ __global__ void maps_disk_light_kernel(const T* in, T* out, int n) {
     s += ls.pdf + ls.distance + ls.point.x + light.pdf(ls.direction) + light.invert(ls.direction).x + light.solid_angle();
     s += light.ellipse().alpha() + apse::sample_disk_light(V(0), V(a, T(0), T(-1)), V(0, 0, 1), T(1), m, u).pdf;
     s += apse::disk_light_pdf(V(0), V(a, T(0), T(-1)), V(0, 0, 1), T(1), ls.direction);
-    out[i] = s + T(it);
+    out[i] = s + T(diag.iterations);
 }
 
 // The tabulated maps: a separate small kernel; the table lives in device memory (here: passed
@@ -141,13 +150,13 @@ __global__ void tabulated_kernel(const T* in, T* out, float* table_rows, int n) 
     if (i % 2 == 0) {
         const apse::TabulatedMap<T> tab(e, view);
         const auto d = tab.sample(u).direction;
-        int it = 0;
-        s += tab.sample(u, it).pdf + T(it) + tab.pdf(d) + tab.invert(d).x + T(tab.empty() ? 1 : 0) + tab.ellipse().alpha();
+        apse::SampleDiagnostics diag{0};
+        s += apse::sample_with_diagnostics(tab, u, diag).pdf + T(diag.iterations) + tab.pdf(d) + tab.invert(d).x + T(tab.empty() ? 1 : 0) + tab.ellipse().alpha();
     } else {
         const apse::TabulatedLdRadialMap<T> tld(e, view);
         const auto d = tld.sample(u).direction;
-        int it = 0;
-        s += tld.sample(u, it).pdf + T(it) + tld.pdf(d) + tld.invert(d).y + T(tld.empty() ? 1 : 0) + tld.radial().ellipse().beta();
+        apse::SampleDiagnostics diag{0};
+        s += apse::sample_with_diagnostics(tld, u, diag).pdf + T(diag.iterations) + tld.pdf(d) + tld.invert(d).y + T(tld.empty() ? 1 : 0) + tld.radial().ellipse().beta();
     }
     out[i] = s;
 }

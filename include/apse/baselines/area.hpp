@@ -30,6 +30,7 @@ namespace apse {
 /// non-finite, a radius whose reciprocal overflows, a zero or non-finite normal, or a non-finite
 /// centre. `normal` need not be unit length (it is normalised). Trivially copyable.
 template <class T> struct DiskFrame {
+    static_assert(detail::is_real_type<T>(), "apse: DiskFrame<T>: T must be float or double");
     using vec3 = glm::vec<3, T>;  ///< a 3-D vector (direction, point or normal)
 
     vec3 center;   ///< the disk's centre
@@ -67,6 +68,8 @@ template <class T> struct DiskFrame {
 /// and the tests (from a stored DiskFrame); per sample: one concentric point, one sin/cos, one
 /// square root, one division. Trivially copyable.
 template <class T> class DiskAreaSampler {
+    static_assert(detail::is_real_type<T>(), "apse: DiskAreaSampler<T>: T must be float or double");
+
 public:
     using vec2 = glm::vec<2, T>;  ///< a point of the unit square
     using vec3 = glm::vec<3, T>;  ///< a 3-D vector (direction, point or normal)

@@ -123,6 +123,8 @@ template <class T> struct AttemptSequence {
 /// Domain as project_disk: `normal` any finite non-zero vector, radius > 0, two-sided; empty
 /// (every pdf 0) for degenerate input or o in the disk's plane. Measure: solid angle.
 template <class T> class GamitoSingleShot {
+    static_assert(detail::is_real_type<T>(), "apse: GamitoSingleShot<T>: T must be float or double");
+
 public:
     using vec2 = glm::vec<2, T>;  ///< a point of the unit square
     using vec3 = glm::vec<3, T>;  ///< a 3-D vector (direction, point or normal)
@@ -169,11 +171,13 @@ private:
 ///     pdf = (1 − (1 − A)^N) / Omega_disk,   A = Omega_disk / Omega_square
 /// (each attempt accepts with probability A; given success the direction is uniform over the
 /// disk; success has probability 1 − (1 − A)^N); N failures give "no sample" (pdf 0). Unbiased.
-/// Omega_disk comes from project_disk(...).solid_angle() (one Carlson R_J at set-up; no closed
+/// Omega_disk (solid_angle()) comes from project_disk(...).solid_angle() (one Carlson R_J at set-up; no closed
 /// form in elementary functions exists for an off-axis disk). N is clamped to [1, 64]; N = 1 is
 /// GamitoSingleShot with an extra elliptic integral. Domain and empty rules as GamitoSingleShot
 /// (also empty if project_disk finds the disk empty). Measure: solid angle.
 template <class T> class GamitoRetry {
+    static_assert(detail::is_real_type<T>(), "apse: GamitoRetry<T>: T must be float or double");
+
 public:
     using vec2 = glm::vec<2, T>;  ///< a point of the unit square
     using vec3 = glm::vec<3, T>;  ///< a 3-D vector (direction, point or normal)
@@ -203,8 +207,8 @@ public:
     APSE_FUNC const SphericalRectangle<T>& bounding_rectangle() const noexcept { return square_; }
     /// N, the maximal number of attempts per sample.
     APSE_FUNC int max_attempts() const noexcept { return attempts_; }
-    /// Omega_disk (steradians, two-sided; 0 if empty).
-    APSE_FUNC T disk_solid_angle() const noexcept { return disk_solid_angle_; }
+    /// Omega_disk, the solid angle of the disk sampled (steradians, two-sided; 0 if empty).
+    APSE_FUNC T solid_angle() const noexcept { return disk_solid_angle_; }
     /// A = Omega_disk / Omega_square, the acceptance probability of one attempt.
     APSE_FUNC T acceptance() const noexcept { return acceptance_; }
     /// 1 − (1 − A)^N, the probability that `sample` returns a sample.

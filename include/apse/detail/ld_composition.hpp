@@ -9,8 +9,8 @@
 /// fraction) and u2 = radius^2 (radial solid-angle fraction); the inverse goes back the same way.
 /// The concentric map preserves area, so the composition has the radial map's density.
 ///
-/// `Radial` is RadialMap<T> or TabulatedMap<T>: it provides `ellipse()`, `sample(u, iterations)`
-/// and `local_coordinates(l)` (docs/math.md §4 inverse on the unit local direction l).
+/// `Radial` is RadialMap<T> or TabulatedMap<T>: it provides `ellipse()`, the counting sample
+/// (reached through DiagnosticsAccess, sample.hpp) and `local_coordinates(l)` (docs/math.md §4 inverse on the unit local direction l).
 
 #include <cmath>
 
@@ -36,7 +36,7 @@ APSE_FUNC DirectionSample<T> ld_sample(const Radial& radial, bool valid, const g
     const glm::vec<2, T> uc = clamp_unit(u, ok);
     if (!ok) return {radial.ellipse().z, T(0)};
     const ConcentricPolar<T> disk = concentric_to_disk(uc);
-    return radial.sample(glm::vec<2, T>(disk.turns, disk.radius * disk.radius), iterations);
+    return DiagnosticsAccess::sample(radial, glm::vec<2, T>(disk.turns, disk.radius * disk.radius), iterations);
 }
 
 /// invert() of the LD composition over `radial`: the radial map's (u1, u2) of the world-space

@@ -23,6 +23,8 @@ namespace apse {
 /// RadialMap composed with the concentric map (same set-up, inversion and accuracy as
 /// RadialMap). Trivially copyable.
 template <class T> class LdRadialMap {
+    static_assert(detail::is_real_type<T>(), "apse: LdRadialMap<T>: T must be float or double");
+
 public:
     using vec2 = glm::vec<2, T>;  ///< a point of the unit square
     using vec3 = glm::vec<3, T>;  ///< a 3-D vector (direction, point or normal)
@@ -36,17 +38,16 @@ public:
     /// Solid angle Omega of the ellipse (steradians); 0 when empty.
     APSE_FUNC T solid_angle() const noexcept { return radial_.solid_angle(); }
 
+    /// True if the map cannot sample (as RadialMap::empty): every sample and pdf is then 0.
+    APSE_FUNC bool empty() const noexcept { return radial_.empty(); }
+
     /// Direction for the point u of the unit square: world-space unit vector inside the ellipse,
     /// pdf = 1/Omega (solid angle). u is clamped into [0, 1]^2; a NaN coordinate or an empty
-    /// ellipse gives pdf 0 (and the centre direction). `iterations`: as RadialMap::sample.
-    APSE_FUNC DirectionSample<T> sample(const vec2& u, int& iterations) const noexcept {
-        return detail::ld_sample(radial_, radial_.solid_angle() > T(0), u, iterations);
-    }
-
-    /// sample(u, iterations) without the iteration count.
+    /// map gives pdf 0 (and the centre direction). The inversion iterations:
+    /// apse::sample_with_diagnostics.
     APSE_FUNC DirectionSample<T> sample(const vec2& u) const noexcept {
         int iterations = 0;
-        return sample(u, iterations);
+        return sample_counted(u, iterations);
     }
 
     /// The point of the unit square that sample() maps to the world-space direction `d` (any
@@ -54,7 +55,7 @@ public:
     /// centre, where the angle is undefined). Outside: the point whose image is the boundary
     /// point at the same azimuth; zero/NaN/infinite direction or empty ellipse: (0, 0).
     APSE_FUNC vec2 invert(const vec3& d) const noexcept {
-        return detail::ld_invert(radial_, radial_.solid_angle() > T(0), d);
+        return detail::ld_invert(radial_, !radial_.empty(), d);
     }
 
     /// Density of sample() at `d`, in solid angle: 1/Omega inside the ellipse, 0 outside.
@@ -64,6 +65,13 @@ public:
     APSE_FUNC const RadialMap<T>& radial() const noexcept { return radial_; }
 
 private:
+    friend struct detail::DiagnosticsAccess;
+
+    /// sample(u), counting the radial map's inversion iterations in `iterations`.
+    APSE_FUNC DirectionSample<T> sample_counted(const vec2& u, int& iterations) const noexcept {
+        return detail::ld_sample(radial_, !radial_.empty(), u, iterations);
+    }
+
     RadialMap<T> radial_;
 };
 

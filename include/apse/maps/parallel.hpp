@@ -50,6 +50,8 @@ template <class T> APSE_FUNC T parallel_guess(T g, T beta, T w) noexcept {
 /// relative stopping rule 4 eps of Omega/2. Accuracy (measured, docs/maps.md): cumulative-area
 /// error <= 1e-14 (double) / 1e-6 (float) relative to Omega/2. Trivially copyable.
 template <class T> class ParallelMap {
+    static_assert(detail::is_real_type<T>(), "apse: ParallelMap<T>: T must be float or double");
+
 public:
     using vec2 = glm::vec<2, T>;  ///< a point of the unit square
     using vec3 = glm::vec<3, T>;  ///< a 3-D vector (direction, point or normal)
@@ -74,31 +76,17 @@ public:
     /// Solid angle Omega of the ellipse (steradians); 0 when empty.
     APSE_FUNC T solid_angle() const noexcept { return valid_ ? omega_ : T(0); }
 
+    /// True if the map cannot sample (empty ellipse, or a solid angle that is 0 or not finite in
+    /// T): every sample and pdf is then 0.
+    APSE_FUNC bool empty() const noexcept { return !valid_; }
+
     /// Direction for the point u of the unit square, docs/math.md §5: world-space unit vector inside
     /// the ellipse, pdf = 1/Omega (solid angle). u is clamped into [0, 1]^2; a NaN coordinate or
-    /// an empty ellipse gives pdf 0 (and the centre direction). `iterations` receives the number
-    /// of inversion iterations (detail/inversion.hpp).
-    APSE_FUNC DirectionSample<T> sample(const vec2& u, int& iterations) const noexcept {
-        iterations = 0;
-        bool ok = valid_;
-        const vec2 uc = detail::clamp_unit(u, ok);
-        if (!ok) return {ellipse_.z, T(0)};
-        const T u1 = uc.x, u2 = uc.y;
-        const detail::HalfFold<T> fold = detail::fold_half(u1);
-        const detail::ParallelPoint<T> p = solve_half(fold.fraction, iterations);
-        const T x = (T(2) * u2 - T(1)) * p.x_max;
-        // 1 − x^2 = (1 − x_max^2) + 4 u2 (1 − u2) x_max^2 with 1 − x_max^2 = (b cos alpha / N)^2: no
-        // cancellation where the slice reaches the horizon (x_max ~ 1 in nearly hemispherical ellipses).
-        const T bn = areas_.b_ca / p.n;
-        const T rxy = std::sqrt(bn * bn + T(4) * u2 * (T(1) - u2) * p.x_max * p.x_max);
-        const vec3 local(x, fold.side * rxy * p.sin_psi, rxy * p.cos_psi);
-        return {ellipse_.to_world(local), inv_omega_};
-    }
-
-    /// sample(u, iterations) without the iteration count.
+    /// an empty map gives pdf 0 (and the centre direction). The inversion iterations:
+    /// apse::sample_with_diagnostics.
     APSE_FUNC DirectionSample<T> sample(const vec2& u) const noexcept {
         int iterations = 0;
-        return sample(u, iterations);
+        return sample_counted(u, iterations);
     }
 
     /// The point of the unit square that sample() maps to the world-space direction `d` (any
@@ -137,7 +125,7 @@ public:
     APSE_FUNC T pdf(const vec3& d) const noexcept { return ellipse_.contains(d) ? inv_omega_ : T(0); }
 
     /// Solves the edge-area equation J(e) = g Omega/2 (g in [0, 1]: the fraction of a half
-    /// beyond the slice) for the slice state; `iterations` as in sample().
+    /// beyond the slice) for the slice state, with the inversion iterations in `iterations`.
     APSE_FUNC detail::ParallelPoint<T> solve_half(T g, int& iterations) const noexcept {
         iterations = 0;
         const T beta = beta_;
@@ -168,6 +156,26 @@ public:
     }
 
 private:
+    friend struct detail::DiagnosticsAccess;
+
+    /// sample(u), counting the inversion iterations in `iterations` (detail/inversion.hpp).
+    APSE_FUNC DirectionSample<T> sample_counted(const vec2& u, int& iterations) const noexcept {
+        iterations = 0;
+        bool ok = valid_;
+        const vec2 uc = detail::clamp_unit(u, ok);
+        if (!ok) return {ellipse_.z, T(0)};
+        const T u1 = uc.x, u2 = uc.y;
+        const detail::HalfFold<T> fold = detail::fold_half(u1);
+        const detail::ParallelPoint<T> p = solve_half(fold.fraction, iterations);
+        const T x = (T(2) * u2 - T(1)) * p.x_max;
+        // 1 − x^2 = (1 − x_max^2) + 4 u2 (1 − u2) x_max^2 with 1 − x_max^2 = (b cos alpha / N)^2: no
+        // cancellation where the slice reaches the horizon (x_max ~ 1 in nearly hemispherical ellipses).
+        const T bn = areas_.b_ca / p.n;
+        const T rxy = std::sqrt(bn * bn + T(4) * u2 * (T(1) - u2) * p.x_max * p.x_max);
+        const vec3 local(x, fold.side * rxy * p.sin_psi, rxy * p.cos_psi);
+        return {ellipse_.to_world(local), inv_omega_};
+    }
+
     SphericalEllipse<T> ellipse_;
     detail::EllipseAreas<T> areas_;
     T beta_;  ///< the minor semi-arc (one atan, at set-up)

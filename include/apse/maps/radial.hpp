@@ -34,6 +34,8 @@ namespace apse {
 /// relative to Omega/4; directions to a few ulps.
 /// Trivially copyable (pass it to kernels by value).
 template <class T> class RadialMap {
+    static_assert(detail::is_real_type<T>(), "apse: RadialMap<T>: T must be float or double");
+
 public:
     using vec2 = glm::vec<2, T>;  ///< a point of the unit square
     using vec3 = glm::vec<3, T>;  ///< a 3-D vector (direction, point or normal)
@@ -58,23 +60,17 @@ public:
     /// Solid angle Omega of the ellipse (steradians); 0 when empty.
     APSE_FUNC T solid_angle() const noexcept { return valid_ ? omega_ : T(0); }
 
+    /// True if the map cannot sample (empty ellipse, or a solid angle that is 0 or not finite in
+    /// T): every sample and pdf is then 0.
+    APSE_FUNC bool empty() const noexcept { return !valid_; }
+
     /// Direction for the point u of the unit square, docs/math.md §4: world-space unit vector inside
     /// the ellipse, pdf = 1/Omega (solid angle). u is clamped into [0, 1]^2 (u = 1 is the
-    /// square's closed edge); a NaN coordinate or an empty ellipse gives pdf 0 (and the centre
-    /// direction). `iterations` receives the number of inversion iterations (0 for the exact
-    /// first guess; detail/inversion.hpp).
-    APSE_FUNC DirectionSample<T> sample(const vec2& u, int& iterations) const noexcept {
-        iterations = 0;
-        bool ok = valid_;
-        const vec2 uc = detail::clamp_unit(u, ok);
-        if (!ok) return {ellipse_.z, T(0)};
-        return {ellipse_.to_world(local_direction(uc.x, uc.y, iterations)), inv_omega_};
-    }
-
-    /// sample(u, iterations) without the iteration count.
+    /// square's closed edge); a NaN coordinate or an empty map gives pdf 0 (and the centre
+    /// direction). The inversion iterations: apse::sample_with_diagnostics.
     APSE_FUNC DirectionSample<T> sample(const vec2& u) const noexcept {
         int iterations = 0;
-        return sample(u, iterations);
+        return sample_counted(u, iterations);
     }
 
     /// The point of the unit square that sample() maps to the world-space direction `d` (any
@@ -94,7 +90,7 @@ public:
     APSE_FUNC T pdf(const vec3& d) const noexcept { return ellipse_.contains(d) ? inv_omega_ : T(0); }
 
     /// Building block: the local-frame direction (x along the major axis, z the centre) for
-    /// (u1, u2) in [0, 1]^2 (not checked).
+    /// (u1, u2) in [0, 1]^2 (not checked), with the inversion iterations in `iterations`.
     APSE_FUNC vec3 local_direction(T u1, T u2, int& iterations) const noexcept {
         const detail::QuadrantFold<T> fold = detail::fold_quadrant(u1);
         const detail::RadialPoint<T> p = solve_quadrant(fold.fraction, iterations);
@@ -163,6 +159,18 @@ public:
     }
 
 private:
+    friend struct detail::DiagnosticsAccess;
+
+    /// sample(u), counting the inversion iterations in `iterations` (0 for the exact first guess;
+    /// detail/inversion.hpp).
+    APSE_FUNC DirectionSample<T> sample_counted(const vec2& u, int& iterations) const noexcept {
+        iterations = 0;
+        bool ok = valid_;
+        const vec2 uc = detail::clamp_unit(u, ok);
+        if (!ok) return {ellipse_.z, T(0)};
+        return {ellipse_.to_world(local_direction(uc.x, uc.y, iterations)), inv_omega_};
+    }
+
     SphericalEllipse<T> ellipse_;
     detail::EllipseAreas<T> areas_;
     T omega_, inv_omega_, quarter_, kappa_, singular_im2_;

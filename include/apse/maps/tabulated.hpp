@@ -154,6 +154,8 @@ using TabulationTable = TabulationTableN<128, 17, 9>;
 /// the first guess) and a polynomial sin/cos. Holds a pointer into the table
 /// (the table must outlive the map). Trivially copyable.
 template <class T> class TabulatedMap {
+    static_assert(detail::is_real_type<T>(), "apse: TabulatedMap<T>: T must be float or double");
+
 public:
     using vec2 = glm::vec<2, T>;  ///< a point of the unit square
     using vec3 = glm::vec<3, T>;  ///< a 3-D vector (direction, point or normal)
@@ -209,23 +211,11 @@ public:
     /// Direction for the point u of the unit square (file comment): world-space unit vector
     /// inside the ellipse, with its exact density in solid angle (within the table's error of
     /// 1/Omega; never an estimate). u is clamped into [0, 1]^2; a NaN coordinate, an empty
-    /// ellipse or an invalid table gives pdf 0 (and the centre direction).
-    /// `iterations` receives the number of table-walk steps (0 when the uniform guess was the
-    /// bin; interface of the exact maps' sample(u, iterations)).
-    APSE_FUNC DirectionSample<T> sample(const vec2& u, int& iterations) const noexcept {
-        iterations = 0;
-        bool ok = valid_;
-        const vec2 uc = detail::clamp_unit(u, ok);
-        if (!ok) return {ellipse_.z, T(0)};
-        T pdf = T(0);
-        const vec3 l = local_direction(uc.x, uc.y, pdf, iterations);
-        return {ellipse_.to_world(l), pdf};
-    }
-
-    /// sample(u, iterations) without the step count.
+    /// ellipse or an invalid table gives pdf 0 (and the centre direction). The table-walk steps:
+    /// apse::sample_with_diagnostics.
     APSE_FUNC DirectionSample<T> sample(const vec2& u) const noexcept {
         int iterations = 0;
-        return sample(u, iterations);
+        return sample_counted(u, iterations);
     }
 
     /// The point of the unit square that sample() maps to the world-space direction `d` (any
@@ -319,6 +309,20 @@ public:
     APSE_FUNC T kappa() const noexcept { return kappa_; }
 
 private:
+    friend struct detail::DiagnosticsAccess;
+
+    /// sample(u), counting the table-walk steps in `iterations` (0 when the uniform guess was the
+    /// bin).
+    APSE_FUNC DirectionSample<T> sample_counted(const vec2& u, int& iterations) const noexcept {
+        iterations = 0;
+        bool ok = valid_;
+        const vec2 uc = detail::clamp_unit(u, ok);
+        if (!ok) return {ellipse_.z, T(0)};
+        T pdf = T(0);
+        const vec3 l = local_direction(uc.x, uc.y, pdf, iterations);
+        return {ellipse_.to_world(l), pdf};
+    }
+
     struct Azimuth {
         T ct, st;  ///< cos tau, sin tau
         T lambda;  ///< Lambert anomaly in [0, pi/2]
@@ -366,6 +370,8 @@ private:
 /// Continuous on the closed square; the same density, pdf, accuracy and table as TabulatedMap.
 /// Trivially copyable.
 template <class T> class TabulatedLdRadialMap {
+    static_assert(detail::is_real_type<T>(), "apse: TabulatedLdRadialMap<T>: T must be float or double");
+
 public:
     using vec2 = glm::vec<2, T>;  ///< a point of the unit square
     using vec3 = glm::vec<3, T>;  ///< a 3-D vector (direction, point or normal)
@@ -381,16 +387,11 @@ public:
     APSE_FUNC bool empty() const noexcept { return radial_.empty(); }
 
     /// Direction for u in [0, 1]^2 (clamped) with its exact solid-angle density; NaN, empty
-    /// ellipse or invalid table: pdf 0 and the centre direction.
-    /// `iterations`: table-walk steps, as TabulatedMap::sample.
-    APSE_FUNC DirectionSample<T> sample(const vec2& u, int& iterations) const noexcept {
-        return detail::ld_sample(radial_, !radial_.empty(), u, iterations);
-    }
-
-    /// sample(u, iterations) without the step count.
+    /// ellipse or invalid table: pdf 0 and the centre direction. The table-walk steps:
+    /// apse::sample_with_diagnostics.
     APSE_FUNC DirectionSample<T> sample(const vec2& u) const noexcept {
         int iterations = 0;
-        return sample(u, iterations);
+        return sample_counted(u, iterations);
     }
 
     /// Inverse of sample() (as TabulatedMap::invert, then the inverse concentric map; the angle
@@ -407,6 +408,13 @@ public:
     APSE_FUNC const TabulatedMap<T>& radial() const noexcept { return radial_; }
 
 private:
+    friend struct detail::DiagnosticsAccess;
+
+    /// sample(u), counting the tabulated map's table-walk steps in `iterations`.
+    APSE_FUNC DirectionSample<T> sample_counted(const vec2& u, int& iterations) const noexcept {
+        return detail::ld_sample(radial_, !radial_.empty(), u, iterations);
+    }
+
     TabulatedMap<T> radial_;
 };
 

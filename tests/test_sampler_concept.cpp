@@ -1,0 +1,382 @@
+// The sampler concept (README, "The sampler concept"), checked for every sampler in float and
+// double: what each one must provide (compile time: member functions, their return types and
+// noexcept, trivially copyable samplers and results, which samplers have invert() and
+// solid_angle() and which count iterations — the README's table), and how the members must agree
+// (run time): empty() false for a normal light and true for degenerate ones, pdf 0 everywhere
+// when empty, samples inside the light with pdf(sample) = the reported pdf, invert(sample(u)) = u,
+// solid_angle() against references independent of apse (mpmath table, closed form),
+// sample_with_diagnostics identical to sample, and point_on_plane's points on the light.
+
+#include <catch2/catch.hpp>
+
+#include <apse/apse.hpp>
+
+#include <cmath>
+#include <cstdio>
+#include <string>
+#include <type_traits>
+#include <utility>
+
+#include "support/default_table.hpp"
+
+namespace {
+
+template <class T> using V3 = glm::vec<3, T>;
+template <class T> using V2 = glm::vec<2, T>;
+
+// --- the scenes ---------------------------------------------------------------------------------
+
+/// A disk light seen from o, and a receiver normal at o (for CosineWeighted).
+template <class T> struct Scene {
+    V3<T> o, c, n;
+    T r;
+    V3<T> receiver;
+};
+
+/// The disk {z = −1, |p − (0.5, 0, −1)| <= 1} seen from the origin: an oblique, close light.
+/// Its solid angle, 1.63710354934542635408343292152 sr, is the mpmath reference of
+/// tests/data/projection/disks.csv (row 2, tools/gen_projection_reference.py).
+template <class T> Scene<T> normal_scene() {
+    return {V3<T>(0), V3<T>(T(0.5), T(0), T(-1)), V3<T>(0, 0, 1), T(1), V3<T>(T(0.2), T(0.1), T(-1))};
+}
+const double kDiskOmega = 1.63710354934542635408343292152;
+
+/// The disk's circumscribed square [−0.5, 1.5] × [−1, 1] at z = −1 (what SphericalRectangle
+/// samples in these tests): solid angle by the textbook corner formula, sum of ±atan(x y / (d
+/// sqrt(x² + y² + d²))) over the corners (not apse's cancellation-free form), in long double.
+double square_omega() {
+    auto f = [](long double x, long double y) { return std::atan(x * y / std::sqrt(x * x + y * y + 1.0L)); };
+    return double(f(1.5L, 1.0L) - f(-0.5L, 1.0L) - f(1.5L, -1.0L) + f(-0.5L, -1.0L));
+}
+
+/// Degenerate scenes: every sampler built from them must be empty.
+enum class Degenerate {
+    in_plane,     ///< o in the disk's plane (solid angle 0)
+    zero_radius,  ///< radius 0
+    nan_centre,   ///< a NaN coordinate
+    behind,       ///< (CosineWeighted only) the light entirely below the receiver's horizon
+};
+template <class T> Scene<T> degenerate_scene(Degenerate d) {
+    Scene<T> s = normal_scene<T>();
+    if (d == Degenerate::in_plane) s.o = V3<T>(T(3), T(0), T(-1));
+    if (d == Degenerate::zero_radius) s.r = T(0);
+    if (d == Degenerate::nan_centre) s.c.x = apse::quiet_nan<T>();
+    if (d == Degenerate::behind) s.receiver = V3<T>(T(0.1), T(0), T(1));  // faces away from the light
+    return s;
+}
+
+// --- the samplers: one factory each, with the README's table as constants -----------------------
+
+template <class T> apse::SphericalEllipse<T> ellipse_of(const Scene<T>& s) { return apse::project_disk(s.o, s.c, s.n, s.r); }
+
+enum class Shape { disk, square };
+
+struct Radial {
+    static constexpr const char* name = "RadialMap";
+    static constexpr bool invertible = true, has_solid_angle = true, counts = true;
+    static constexpr Shape shape = Shape::disk;
+    template <class T> static auto make(const Scene<T>& s) { return apse::RadialMap<T>(ellipse_of(s)); }
+};
+struct LdRadial {
+    static constexpr const char* name = "LdRadialMap";
+    static constexpr bool invertible = true, has_solid_angle = true, counts = true;
+    static constexpr Shape shape = Shape::disk;
+    template <class T> static auto make(const Scene<T>& s) { return apse::LdRadialMap<T>(ellipse_of(s)); }
+};
+struct Parallel {
+    static constexpr const char* name = "ParallelMap";
+    static constexpr bool invertible = true, has_solid_angle = true, counts = true;
+    static constexpr Shape shape = Shape::disk;
+    template <class T> static auto make(const Scene<T>& s) { return apse::ParallelMap<T>(ellipse_of(s)); }
+};
+struct Tabulated {  // no solid_angle(): the tabulated maps never compute Omega (README)
+    static constexpr const char* name = "TabulatedMap";
+    static constexpr bool invertible = true, has_solid_angle = false, counts = true;
+    static constexpr Shape shape = Shape::disk;
+    template <class T> static auto make(const Scene<T>& s) {
+        return apse::TabulatedMap<T>(ellipse_of(s), apse_test::default_table().view());
+    }
+};
+struct TabulatedLdRadial {
+    static constexpr const char* name = "TabulatedLdRadialMap";
+    static constexpr bool invertible = true, has_solid_angle = false, counts = true;
+    static constexpr Shape shape = Shape::disk;
+    template <class T> static auto make(const Scene<T>& s) {
+        return apse::TabulatedLdRadialMap<T>(ellipse_of(s), apse_test::default_table().view());
+    }
+};
+template <class Plain> struct Cosine {  // CosineWeighted over a map, with the scene's receiver normal
+    static constexpr const char* name = "CosineWeighted";
+    static constexpr bool invertible = true, has_solid_angle = false, counts = false;
+    static constexpr Shape shape = Shape::disk;
+    template <class T> static auto make(const Scene<T>& s) {
+        using Map = decltype(Plain::make(s));
+        return apse::CosineWeighted<Map>(Plain::make(s), s.receiver);
+    }
+};
+struct Area {  // from the light's stored frame
+    static constexpr const char* name = "DiskAreaSampler(o, frame)";
+    static constexpr bool invertible = true, has_solid_angle = false, counts = false;
+    static constexpr Shape shape = Shape::disk;
+    template <class T> static auto make(const Scene<T>& s) {
+        return apse::DiskAreaSampler<T>(s.o, apse::DiskFrame<T>::make(s.c, s.n, s.r));
+    }
+};
+struct AreaDirect {  // the convenience constructor
+    static constexpr const char* name = "DiskAreaSampler(o, c, n, r)";
+    static constexpr bool invertible = true, has_solid_angle = false, counts = false;
+    static constexpr Shape shape = Shape::disk;
+    template <class T> static auto make(const Scene<T>& s) { return apse::DiskAreaSampler<T>(s.o, s.c, s.n, s.r); }
+};
+struct GamitoSingle {  // no invert(): rejection is not a bijection; no solid_angle(): never computed
+    static constexpr const char* name = "GamitoSingleShot";
+    static constexpr bool invertible = false, has_solid_angle = false, counts = false;
+    static constexpr Shape shape = Shape::disk;
+    template <class T> static auto make(const Scene<T>& s) { return apse::GamitoSingleShot<T>(s.o, s.c, s.n, s.r); }
+};
+struct GamitoRetry {
+    static constexpr const char* name = "GamitoRetry";
+    static constexpr bool invertible = false, has_solid_angle = true, counts = false;
+    static constexpr Shape shape = Shape::disk;
+    template <class T> static auto make(const Scene<T>& s) { return apse::GamitoRetry<T>(s.o, s.c, s.n, s.r, 8); }
+};
+struct Rectangle {  // the disk's circumscribed square
+    static constexpr const char* name = "SphericalRectangle";
+    static constexpr bool invertible = true, has_solid_angle = true, counts = false;
+    static constexpr Shape shape = Shape::square;
+    template <class T> static auto make(const Scene<T>& s) {
+        return apse::SphericalRectangle<T>::from_center(s.o, s.c, V3<T>(s.r, 0, 0), V3<T>(0, s.r, 0));
+    }
+};
+
+// --- compile-time checks --------------------------------------------------------------------------
+
+template <class S, class = void> struct has_invert : std::false_type {};
+template <class S>
+struct has_invert<S, std::void_t<decltype(std::declval<const S&>().invert(std::declval<typename S::vec3>()))>>
+    : std::true_type {};
+template <class S, class = void> struct has_solid_angle : std::false_type {};
+template <class S>
+struct has_solid_angle<S, std::void_t<decltype(std::declval<const S&>().solid_angle())>> : std::true_type {};
+
+/// The concept's static part for the sampler type S of the factory F in type T.
+template <class F, class T> constexpr bool static_checks() {
+    using S = decltype(F::make(std::declval<const Scene<T>&>()));
+    using R = decltype(std::declval<const S&>().sample(std::declval<const V2<T>&>()));
+    static_assert(std::is_trivially_copyable<S>::value, "samplers are trivially copyable (kernel arguments)");
+    static_assert(std::is_same<typename S::vec2, V2<T>>::value && std::is_same<typename S::vec3, V3<T>>::value,
+                  "vec2 / vec3 are GLM's vectors of T");
+    // sample(u): the result family (DirectionSample or a type derived from it), an aggregate
+    static_assert(std::is_base_of<apse::DirectionSample<T>, R>::value, "sample() returns the result family");
+    static_assert(std::is_aggregate<R>::value && std::is_trivially_copyable<R>::value, "results are plain data");
+    static_assert(noexcept(std::declval<const S&>().sample(std::declval<const V2<T>&>())), "sample is noexcept");
+    // empty(), pdf(direction)
+    static_assert(std::is_same<decltype(std::declval<const S&>().empty()), bool>::value, "empty() -> bool");
+    static_assert(noexcept(std::declval<const S&>().empty()), "empty is noexcept");
+    static_assert(std::is_same<decltype(std::declval<const S&>().pdf(std::declval<const V3<T>&>())), T>::value,
+                  "pdf(direction) -> T");
+    static_assert(noexcept(std::declval<const S&>().pdf(std::declval<const V3<T>&>())), "pdf is noexcept");
+    // invert and solid_angle exactly where the README's table says
+    static_assert(has_invert<S>::value == F::invertible, "invert() where the README says");
+    static_assert(has_solid_angle<S>::value == F::has_solid_angle, "solid_angle() where the README says");
+    if constexpr (F::invertible) {
+        static_assert(std::is_same<decltype(std::declval<const S&>().invert(std::declval<const V3<T>&>())), V2<T>>::value,
+                      "invert(direction) -> vec2");
+        static_assert(noexcept(std::declval<const S&>().invert(std::declval<const V3<T>&>())), "invert is noexcept");
+    }
+    if constexpr (F::has_solid_angle) {
+        static_assert(std::is_same<decltype(std::declval<const S&>().solid_angle()), T>::value, "solid_angle() -> T");
+        static_assert(noexcept(std::declval<const S&>().solid_angle()), "solid_angle is noexcept");
+    }
+    // diagnostics: one free function for every sampler, the same result type as sample()
+    static_assert(apse::counts_iterations_v<S> == F::counts, "the maps count their iterations, no other sampler");
+    apse::SampleDiagnostics* diag = nullptr;
+    static_assert(std::is_same<decltype(apse::sample_with_diagnostics(std::declval<const S&>(),
+                                                                      std::declval<const V2<T>&>(), *diag)),
+                               R>::value,
+                  "sample_with_diagnostics returns what sample returns");
+    static_assert(noexcept(apse::sample_with_diagnostics(std::declval<const S&>(), std::declval<const V2<T>&>(), *diag)),
+                  "sample_with_diagnostics is noexcept");
+    return true;
+}
+
+// The result family itself.
+template <class T> constexpr bool result_family_checks() {
+    static_assert(std::is_base_of<apse::DirectionSample<T>, apse::PointSample<T>>::value, "PointSample is a DirectionSample");
+    static_assert(std::is_base_of<apse::PointSample<T>, apse::RectanglePoint<T>>::value, "RectanglePoint is a PointSample");
+    static_assert(std::is_aggregate<apse::DirectionSample<T>>::value && std::is_aggregate<apse::PointSample<T>>::value &&
+                      std::is_aggregate<apse::RectanglePoint<T>>::value,
+                  "results are aggregates");
+    static_assert(std::is_trivially_copyable<apse::PointSample<T>>::value &&
+                      std::is_trivially_copyable<apse::RectanglePoint<T>>::value,
+                  "results are trivially copyable");
+    static_assert(std::is_same<decltype(std::declval<const apse::SphericalRectangle<T>&>().sample_point(
+                                   std::declval<const V2<T>&>())),
+                               apse::RectanglePoint<T>>::value,
+                  "sample_point -> RectanglePoint");
+    return true;
+}
+static_assert(result_family_checks<float>() && result_family_checks<double>(), "");
+
+// --- run-time checks ------------------------------------------------------------------------------
+
+/// Interior points of the square (away from the edges, the radial seam u1 ∈ {0, 1} and the
+/// LD maps' centre, where invert is ambiguous): a 7 × 7 grid in [0.08, 0.92]².
+template <class T> V2<T> grid_point(int i, int j) {
+    return V2<T>(T(0.08 + 0.84 * (i + 0.31) / 7.0), T(0.08 + 0.84 * (j + 0.67) / 7.0));
+}
+
+/// True if the ray o + t·direction meets the scene's light (disk or circumscribed square), up to
+/// a relative slack `tol` of its size; checked through point_on_plane.
+template <class T> bool on_light(const Scene<T>& s, Shape shape, const apse::DirectionSample<T>& d, double tol) {
+    const apse::PointSample<T> p = apse::point_on_plane(d, s.o, s.c, s.n);
+    if (!(p.pdf > T(0))) return false;
+    const glm::dvec3 q = glm::dvec3(p.point) - glm::dvec3(s.c);
+    const glm::dvec3 w = glm::dvec3(p.point) - glm::dvec3(s.o);
+    // the point is on the ray (distance·direction) and in the plane
+    if (glm::length(w - double(p.distance) * glm::dvec3(p.direction)) > tol * glm::length(w)) return false;
+    if (std::fabs(q.z) > tol) return false;
+    const double r = double(s.r) * (1 + tol);
+    return shape == Shape::disk ? q.x * q.x + q.y * q.y <= r * r : std::fabs(q.x) <= r && std::fabs(q.y) <= r;
+}
+
+/// Budgets shared by every sampler on this moderate light: pdf(sample) vs the reported pdf and
+/// the round trip invert(sample(u)) − u measured at most 4e-7 (float) and 7e-16 (double) over all
+/// of them (the printout); the budgets, 1e-5 and 1e-13, leave ~25× and ~150× for other
+/// compilers' FMA contraction and vector paths. A sample on the light within 1e-4 float / 1e-10
+/// double of its size (a unit direction's rounding carried to a plane ~1 away, with slack for the
+/// rim). A wrong pdf, a wrong inverse or a direction off the light errs by far more (a pdf 0.2 %
+/// off fails).
+template <class T> struct Budget {
+    static constexpr double pdf = sizeof(T) == 4 ? 1e-5 : 1e-13;
+    static constexpr double round_trip = sizeof(T) == 4 ? 1e-5 : 1e-13;
+    static constexpr double on_light = sizeof(T) == 4 ? 1e-4 : 1e-10;
+};
+
+template <class F, class T> void check_normal() {
+    static_assert(static_checks<F, T>(), "");
+    const Scene<T> scene = normal_scene<T>();
+    const auto s = F::make(scene);
+    INFO(F::name << " (" << (sizeof(T) == 4 ? "float" : "double") << "), normal light");
+    CHECK_FALSE(s.empty());
+    if constexpr (F::has_solid_angle) {
+        // the disk's Omega against mpmath; the square's against the corner formula; both computed
+        // natively in T: 64 eps covers the float/double rounding of a well-conditioned Omega
+        const double ref = F::shape == Shape::disk ? kDiskOmega : square_omega();
+        CHECK(std::fabs(double(s.solid_angle()) / ref - 1) <= 64 * double(apse::epsilon<T>()));
+    }
+    int accepted = 0;
+    double worst_pdf = 0, worst_u = 0;
+    for (int i = 0; i < 7; ++i)
+        for (int j = 0; j < 7; ++j) {
+            const V2<T> u = grid_point<T>(i, j);
+            const auto smp = s.sample(u);
+            apse::SampleDiagnostics diag{-1};
+            const auto same = apse::sample_with_diagnostics(s, u, diag);
+            // the same computation, bit for bit, and a count only where the sampler counts
+            CHECK(same.pdf == smp.pdf);
+            CHECK(same.direction == smp.direction);
+            CHECK(diag.iterations >= 0);
+            CHECK(diag.iterations <= (F::counts ? apse::detail::max_area_iterations : 0));
+            CHECK(apse::is_finite(smp.pdf));
+            CHECK(std::fabs(double(glm::length(smp.direction)) - 1) <= Budget<T>::on_light);
+            if (!(smp.pdf > T(0))) continue;  // rejected (Gamito single shot): no sample
+            ++accepted;
+            CHECK(on_light(scene, F::shape, smp, Budget<T>::on_light));
+            worst_pdf = std::max(worst_pdf, std::fabs(double(s.pdf(smp.direction)) / double(smp.pdf) - 1));
+            if constexpr (F::invertible) {
+                const V2<T> back = s.invert(smp.direction);
+                worst_u = std::max(worst_u, double(std::max(std::fabs(back.x - u.x), std::fabs(back.y - u.y))));
+            }
+        }
+    // every sampler but Gamito's single shot accepts every point; it accepts ~75 % (pi/4 of the
+    // far-field square): at least half of the 49 points
+    CHECK(accepted >= (std::string(F::name) == "GamitoSingleShot" ? 25 : 49));
+    CHECK(worst_pdf <= Budget<T>::pdf);
+    CHECK(worst_u <= Budget<T>::round_trip);
+    std::printf("[%s] %-28s accepted %2d/49, max |pdf(sample)/pdf - 1| %.1e, max |invert(sample(u)) - u| %.1e\n",
+                sizeof(T) == 4 ? "float" : "double", F::name, accepted, worst_pdf, worst_u);
+    // away from the light: density 0
+    CHECK(s.pdf(V3<T>(0, 0, 1)) == T(0));
+    CHECK(s.pdf(V3<T>(T(-1), T(0), T(-0.1))) == T(0));
+}
+
+template <class F, class T> void check_degenerate(Degenerate d) {
+    const Scene<T> scene = degenerate_scene<T>(d);
+    const auto s = F::make(scene);
+    INFO(F::name << " (" << (sizeof(T) == 4 ? "float" : "double") << "), degenerate case " << int(d));
+    CHECK(s.empty());
+    // Omega is the light's: 0 for a degenerate light, not for one merely below the receiver's horizon
+    if constexpr (F::has_solid_angle)
+        if (d != Degenerate::behind) CHECK(s.solid_angle() == T(0));
+    for (int i = 0; i < 7; ++i)
+        for (int j = 0; j < 7; ++j) {
+            const auto smp = s.sample(grid_point<T>(i, j));
+            CHECK(smp.pdf == T(0));
+            CHECK(apse::is_finite(smp.direction.x + smp.direction.y + smp.direction.z));
+            // pdf 0 everywhere, also towards where the light would be
+            CHECK(s.pdf(glm::normalize(V3<T>(T(0.5), T(0.1 * i - 0.3), T(-1)))) == T(0));
+            if constexpr (F::invertible) {
+                const V2<T> back = s.invert(glm::normalize(V3<T>(T(0.5), T(0.1 * j - 0.3), T(-1))));
+                CHECK(apse::is_finite(back.x + back.y));
+            }
+        }
+}
+
+template <class F, class T> void check_sampler() {
+    check_normal<F, T>();
+    for (Degenerate d : {Degenerate::in_plane, Degenerate::zero_radius, Degenerate::nan_centre}) check_degenerate<F, T>(d);
+}
+
+template <class Plain, class T> void check_map_and_cosine() {
+    check_sampler<Plain, T>();
+    check_sampler<Cosine<Plain>, T>();
+    check_degenerate<Cosine<Plain>, T>(Degenerate::behind);  // light below the receiver's horizon
+}
+
+}  // namespace
+
+TEMPLATE_TEST_CASE("sampler concept: the maps and their cosine-weighted versions", "[concept]", float, double) {
+    check_map_and_cosine<Radial, TestType>();
+    check_map_and_cosine<LdRadial, TestType>();
+    check_map_and_cosine<Parallel, TestType>();
+    check_map_and_cosine<Tabulated, TestType>();
+    check_map_and_cosine<TabulatedLdRadial, TestType>();
+}
+
+TEMPLATE_TEST_CASE("sampler concept: the baselines", "[concept]", float, double) {
+    check_sampler<Area, TestType>();
+    check_sampler<AreaDirect, TestType>();
+    check_sampler<GamitoSingle, TestType>();
+    check_sampler<GamitoRetry, TestType>();
+    check_sampler<Rectangle, TestType>();
+}
+
+TEMPLATE_TEST_CASE("sampler concept: point_on_plane completes a direction sample", "[concept]", float, double) {
+    using T = TestType;
+    const Scene<T> s = normal_scene<T>();
+    // the ray through the disk's centre: the centre, at distance |c − o|
+    const V3<T> dir = glm::normalize(s.c - s.o);
+    const apse::PointSample<T> p = apse::point_on_plane(apse::DirectionSample<T>{dir, T(2)}, s.o, s.c, s.n);
+    const double tol = Budget<T>::on_light;  // rounding of a unit direction carried ~1 away
+    CHECK(p.pdf == T(2));
+    CHECK(p.direction == dir);
+    CHECK(glm::length(glm::dvec3(p.point) - glm::dvec3(s.c)) <= tol);
+    CHECK(std::fabs(double(p.distance) - std::sqrt(1.25)) <= tol);
+    // either orientation of the plane's normal, any length
+    const apse::PointSample<T> q = apse::point_on_plane(apse::DirectionSample<T>{dir, T(2)}, s.o, s.c, T(-7) * s.n);
+    CHECK(glm::length(glm::dvec3(q.point) - glm::dvec3(s.c)) <= tol);
+    // no sample: pdf 0 in, a ray pointing away, a ray parallel to the plane, a NaN direction
+    const V3<T> away = -dir, parallel(T(1), T(0), T(0)), nan(apse::quiet_nan<T>(), T(0), T(-1));
+    for (const auto& in : {apse::DirectionSample<T>{dir, T(0)}, apse::DirectionSample<T>{away, T(1)},
+                           apse::DirectionSample<T>{parallel, T(1)}, apse::DirectionSample<T>{nan, T(1)}}) {
+        const apse::PointSample<T> r = apse::point_on_plane(in, s.o, s.c, s.n);
+        CHECK(r.pdf == T(0));
+        CHECK(r.distance == T(0));
+        CHECK(r.point == s.o);
+    }
+    // a hit beyond T's range (a ray at 1e-3 rad to a plane as far as T's largest values): no sample
+    const T big = T(sizeof(T) == 4 ? 1e38 : 1e307);
+    const apse::DirectionSample<T> grazing{glm::normalize(V3<T>(T(1), T(0), T(-1e-3))), T(1)};
+    CHECK(apse::point_on_plane(grazing, s.o, V3<T>(T(0), T(0), -big), s.n).pdf == T(0));
+}
