@@ -1,4 +1,4 @@
-// Tests of baselines/rectangle.hpp (Ureña–Fajardo–King spherical rectangle sampling) against
+// Tests of spherical_rectangle.hpp (Ureña–Fajardo–King spherical rectangle sampling) against
 // independent references: the mpmath tables of tools/gen_rectangle_reference.py (solid angles and
 // map points), long-double Gauss–Legendre quadrature of the solid angle of grid cells (chi-square),
 // and finite differences (Jacobian). Tolerances are in units of the type's epsilon times the

@@ -10,6 +10,8 @@
 #include <catch2/catch.hpp>
 
 #include <apse/apse.hpp>
+#include <apse/baselines/area.hpp>
+#include <apse/baselines/gamito.hpp>
 
 #include <cmath>
 #include <cstdio>
