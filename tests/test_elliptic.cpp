@@ -7,7 +7,9 @@
 
 #include "support/reference_table.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <limits>
 #include <string>
@@ -263,6 +265,54 @@ TEST_CASE("elliptic: widely spread arguments (up to the whole exponent range) st
     CHECK(rel_error(double(apse::carlson_rd(1.0f, 1e30f, 1.0f)), 1.4999999887144004625e-15) <= 8 * ef);
     CHECK(rel_error(double(apse::ellint_f(1.0f, -3e38f)), 2.6027027953806862106e-18) <= 8 * ef);
     CHECK(rel_error(double(apse::ellint_pi(-1e30f, 1.0f, -1e30f)), 9.9999999247626697497e-16) <= 16 * ef);
+}
+
+TEST_CASE("elliptic: R_J with arguments spread over the whole exponent range", "[elliptic][robust][extreme]") {
+    // tests/data/elliptic/carlson_rj_wide.csv (tools/gen_elliptic_reference.py): e.g.
+    // R_J(1e300, 1e-300, 1e-300, 0.5), NaN before (a fuzz finding), one huge argument with the
+    // others tiny in every position, p tiny or huge, two groups of arguments far apart; inputs
+    // exact in double (wide_double) or float (wide_float), references normal numbers of that
+    // type. Budget 8 eps, that of the R_J table: the reductions used there (rj_wide) err by
+    // < 2^-98 relative, and their closed forms (R_C, R_F) stay within the table's errors. The
+    // reference has 30 digits (nothing added for it).
+    const std::vector<Row> rows = read_table("carlson_rj_wide", 4);
+    REQUIRE(rows.size() >= 60);
+    double worst_d = 0, worst_f = 0;
+    std::size_t n_d = 0, n_f = 0;
+    for (const Row& r : rows) {
+        INFO(r.line);
+        const double ref = double(r.ref);
+        if (r.category == "wide_double") {
+            const double e = rel_error(apse::carlson_rj(r.in[0], r.in[1], r.in[2], r.in[3]), ref) / eps<double>();
+            CHECK(e <= 8);
+            worst_d = std::max(worst_d, e);
+            ++n_d;
+        } else {
+            REQUIRE(r.category == "wide_float");
+            float a[4];
+            for (int i = 0; i < 4; ++i) {
+                a[i] = float(r.in[i]);
+                REQUIRE(double(a[i]) == r.in[i]);  // exact in float
+            }
+            const double e = rel_error(double(apse::carlson_rj(a[0], a[1], a[2], a[3])), ref) / eps<float>();
+            CHECK(e <= 8);
+            worst_f = std::max(worst_f, e);
+            ++n_f;
+        }
+    }
+    CHECK(n_d >= 15);
+    CHECK(n_f >= 40);
+    std::printf("R_J wide table: %zu double rows, max %.2f eps; %zu float rows, max %.2f eps\n", n_d, worst_d, n_f,
+                worst_f);
+    // Beyond the type's range the result is inf (overflow) or 0 / subnormal (underflow), never
+    // NaN (mpmath at 700 digits): R_J(1e300, 1e300, 1e300, 1e-300) = 2.1e-447,
+    // R_J(1e-300, 1e-300, 2e-300, 1e-300) = 8.0e449; R_J(1e-300, 1e-300, 1e-300, 1e300) is normal.
+    // float: R_J(1e36, 1e36, 1e36, 1e-36) ~ 2e-52, R_J(1e-30, 1e-30, 2e-30, 1e-30) ~ 8e44.
+    CHECK(apse::carlson_rj(1e300, 1e300, 1e300, 1e-300) == 0.0);
+    CHECK(std::isinf(apse::carlson_rj(1e-300, 1e-300, 2e-300, 1e-300)));
+    CHECK(rel_error(apse::carlson_rj(1e-300, 1e-300, 1e-300, 1e300), 2.9999999999999998049e-150) <= 8 * eps<double>());
+    CHECK(apse::carlson_rj(1e36f, 1e36f, 1e36f, 1e-36f) == 0.0f);
+    CHECK(std::isinf(apse::carlson_rj(1e-30f, 1e-30f, 2e-30f, 1e-30f)));
 }
 
 TEMPLATE_TEST_CASE("elliptic: pathological inputs return quickly, finite or NaN", "[elliptic][robust][denormals]",
