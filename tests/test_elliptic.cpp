@@ -312,6 +312,10 @@ TEST_CASE("elliptic: R_J with arguments spread over the whole exponent range", "
     CHECK(std::isinf(apse::carlson_rj(1e-300, 1e-300, 2e-300, 1e-300)));
     CHECK(rel_error(apse::carlson_rj(1e-300, 1e-300, 1e-300, 1e300), 2.9999999999999998049e-150) <= 8 * eps<double>());
     CHECK(apse::carlson_rj(1e36f, 1e36f, 1e36f, 1e-36f) == 0.0f);
+    // -0 is a valid zero argument on these paths too (a fuzz finding: R_C(-0, y) was NaN there;
+    // mpmath at 800 digits): p >> x, y, z (the reduction of p), and the widest gap splitting.
+    CHECK(rel_error(apse::carlson_rj(-0.0, 1e-300, 1e-300, 0.5), 9.4247779607693795973e+150) <= 8 * eps<double>());
+    CHECK(rel_error(apse::carlson_rj(-0.0, 1e-300, 1e300, 1e-200), 3.4746720549078668556e+52) <= 8 * eps<double>());
     CHECK(std::isinf(apse::carlson_rj(1e-30f, 1e-30f, 2e-30f, 1e-30f)));
 }
 

@@ -481,6 +481,7 @@ APSE_FUNC APSE_NOINLINE RfRj<T> rj_window(T x, T y, T z, T p, T mx, T mn) noexce
 /// units (p / max > ~2^126 in float), R_J = 3 R_F / p to within (max / p)^(1/2) log(p / max).
 template <class T, bool WithRf>
 APSE_FUNC APSE_COLD RfRj<T> rj_reduce_p(T x, T y, T z, T p) noexcept {
+    x = std::fabs(x), y = std::fabs(y), z = std::fabs(z);  // -0 -> +0: R_C(-0, .) would be NaN
     T top = max_of(max_of(x, y), z);
     int ex = 0;
     (void)std::frexp(top, &ex);
@@ -549,6 +550,7 @@ APSE_FUNC APSE_COLD RfRj<T> rj_wide(T x, T y, T z, T p) noexcept {
         const RfRj<double> r = rj_core<double, WithRf>(double(x), double(y), double(z), double(p));
         return {T(r.rf), T(r.rj)};
     } else {
+        x = std::fabs(x), y = std::fabs(y), z = std::fabs(z);  // -0 -> +0: R_C(-0, .) would be NaN
         RfRj<T> r{T(0), T(0)};
         if constexpr (WithRf) r.rf = rf_core(x, y, z);
         T a0 = min_of(min_of(x, y), z), a1 = median_of(x, y, z), a2 = max_of(max_of(x, y), z);
