@@ -315,15 +315,49 @@ template <class T> APSE_FUNC APSE_NOINLINE T rf_duplication(T x, T y, T z) noexc
     return rf_series(X * Y - Z * Z, X * Y * Z) / std::sqrt(a);
 }
 
+/// log 2.
+template <class T> constexpr T ln2_v = T(0.693147180559945309417232121458176568L);
+
+/// log(a / b) for positive finite a, b whose ratio may overflow or underflow.
+template <class T> APSE_FUNC T log_ratio(T a, T b) noexcept {
+    const T r = a / b;
+    if (r >= T(0x1p-1000) && r <= T(0x1p1000)) return std::log(r);
+    // |log(a/b)| > 693 here: the frexp split adds log(ma/mb) in (-0.7, 0.7) without cancellation
+    int ea = 0, eb = 0;
+    const T ma = std::frexp(a, &ea), mb = std::frexp(b, &eb);
+    return std::log(ma / mb) + T(ea - eb) * ln2_v<T>;
+}
+
+template <class T> APSE_FUNC T rf_core(T x, T y, T z) noexcept;
+
+/// R_F(x, y, z) (no zero argument) when the sum of the arguments over the tolerance overflows.
+/// R_F(v/64) = 8 R_F(v) scales exactly unless the smallest argument then loses bits in the
+/// subnormals (it is below 2^-1016 in double, then 2^2030 below the largest; a fuzz finding,
+/// R_F(1e-45, 1e-45, 1.7e38) in float, flushed two arguments to zero: NaN). Then the arguments
+/// split at their wider gap G >= 2^1015: R_F(x, y, z) = R_F(0, y, z) (1 + O(G^-1/2)) for
+/// x << y <= z, and R_F(x, y, z) = R_C(z, c) (1 + O(G^-1 log G)), c = ((sqrt x + sqrt y)/2)^2,
+/// for x <= y << z (c makes int_0^inf (1/sqrt((t+x)(t+y)) - 1/(t+c)) dt vanish), where
+/// R_C(z, c) = log(2 sqrt(z/c))/sqrt(z) to within c/z. float computes in double.
+template <class T> APSE_FUNC APSE_COLD T rf_huge(T x, T y, T z) noexcept {
+    if constexpr (sizeof(T) == sizeof(float)) {
+        return T(rf_core(double(x), double(y), double(z)));
+    } else {
+        const T lo = min_of(min_of(x, y), z), hi = max_of(max_of(x, y), z);
+        const T mid = max_of(min_of(x, y), min_of(max_of(x, y), z));
+        if (lo >= T(0x1p-1016)) return T(0.125) * rf_duplication(x * T(0.015625), y * T(0.015625), z * T(0.015625));
+        if (std::ilogb(mid) - std::ilogb(lo) >= std::ilogb(hi) - std::ilogb(mid)) return agm_rf(mid, hi);
+        const T sc = T(0.5) * (std::sqrt(lo) + std::sqrt(mid)), sz = std::sqrt(hi);
+        return (log_ratio(sz, sc) + ln2_v<T>) / sz;
+    }
+}
+
 /// R_F(x, y, z) for valid finite arguments (at most one zero); the AGM when one is zero.
 template <class T> APSE_FUNC T rf_core(T x, T y, T z) noexcept {
     if (x == T(0)) return agm_rf(y, z);
     if (y == T(0)) return agm_rf(x, z);
     if (z == T(0)) return agm_rf(x, y);
-    // The mean, or the step count's q (<= the sum / tolerance, ~30x), would overflow:
-    // R_F(v/64) = 8 R_F(v).
-    if (!is_finite((x + y + z) * (T(1) / rf_tolerance<T>())))
-        return T(0.125) * rf_duplication(x * T(0.015625), y * T(0.015625), z * T(0.015625));
+    // The mean, or the step count's q (<= the sum / tolerance, ~30x), would overflow: rescaled.
+    if (!is_finite((x + y + z) * (T(1) / rf_tolerance<T>()))) return rf_huge(x, y, z);
     return rf_duplication(x, y, z);
 }
 
@@ -512,16 +546,6 @@ template <class T> APSE_FUNC T quotient_scaled(T n, T d1, T d2, T d3 = T(1)) noe
     return std::ldexp(n / m, -(e1 + e2 + e3));
 }
 
-/// log(a / b) for positive finite a, b whose ratio may overflow or underflow.
-template <class T> APSE_FUNC T log_ratio(T a, T b) noexcept {
-    const T r = a / b;
-    if (r >= T(0x1p-1000) && r <= T(0x1p1000)) return std::log(r);
-    // |log(a/b)| > 693 here: the frexp split adds log(ma/mb) in (-0.7, 0.7) without cancellation
-    int ea = 0, eb = 0;
-    const T ma = std::frexp(a, &ea), mb = std::frexp(b, &eb);
-    return std::log(ma / mb) + T(ea - eb) * T(0.693147180559945309417232121458176568L);
-}
-
 /// R_J (and optionally R_F) for arguments spread too widely for one power-of-4 scaling to bring
 /// them into the kernels' window (nonzero arguments spanning more than 2^592 in double, 2^64
 /// in float; e.g. R_J(1e300, 1e-300, 1e-300, 0.5)). float is computed in double, whose window
@@ -611,7 +635,7 @@ APSE_FUNC APSE_COLD RfRj<T> rj_wide(T x, T y, T z, T p) noexcept {
             }
             if (large == 2) {  // L = {a2, p}, S = {a0, a1}: sqrt(4^m c) = (sqrt(s0) + sqrt(s1)) / 2
                 const T sa2 = std::sqrt(a2), sc = T(0.5) * (std::sqrt(s0) + std::sqrt(s1));
-                const T rc_c = (log_ratio(sa2, sc) + T(m + 1) * T(0.693147180559945309417232121458176568L)) / sa2;
+                const T rc_c = (log_ratio(sa2, sc) + T(m + 1) * ln2_v<T>) / sa2;
                 r.rj = add + T(3) * (rc_c - rc_core(a2, p)) / p;  // p - c = p (c < 2^-196 p)
                 return r;
             }
@@ -621,7 +645,7 @@ APSE_FUNC APSE_COLD RfRj<T> rj_wide(T x, T y, T z, T p) noexcept {
             }
             // L = {a0, a1, a2}, S = {p}
             const int j = std::ilogb(a0) - std::ilogb(p) - 100;
-            add += quotient_scaled(T(1.5) * T(j) * T(0.693147180559945309417232121458176568L), std::sqrt(a0),
+            add += quotient_scaled(T(1.5) * T(j) * ln2_v<T>, std::sqrt(a0),
                                    std::sqrt(a1), std::sqrt(a2));
             p = std::ldexp(p, j);
         }
