@@ -153,7 +153,7 @@ template <class T> APSE_FUNC T pi_impl(T n, T phi, T m) noexcept {
         const T nn = -n, np = T(1) + nn, mc = T(1) - m;
         const T p = c2 + np * s2, q = c2 + mc * s2 / np;
         const RfRj<T> r = rj_core<T, true>(c2, y, T(1), q);
-        v = (s * r.rf + nn * s * c * rc_core(y / p, q) / std::sqrt(p) + nn * ((mc / np) * (T(1) / T(3)) * s3 * r.rj)) / np;
+        v = (s * r.rf + nn * (s * c * (rc_core(y / p, q) / std::sqrt(p))) + nn * ((mc / np) * (T(1) / T(3)) * s3 * r.rj)) / np;
     }
     if (a.j != T(0)) v += T(2) * a.j * comp_pi_valid(n, m);
     return v;

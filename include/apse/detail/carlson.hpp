@@ -454,25 +454,7 @@ template <class T> APSE_FUNC bool rj_spread_ok(T lo, T hi) noexcept {
     return hi <= spread * lo;  // (an overflowing product means: within)
 }
 
-template <class T, bool WithRf> APSE_FUNC RfRj<T> rj_outside_window(T x, T y, T z, T p) noexcept;
-
-/// R_J (and optionally R_F) for valid finite arguments whose largest one is in the kernels'
-/// window (RjWindow): the AGM when one of x, y, z is zero (complete integral; 2-3x faster;
-/// accurate for any smaller nonzero argument), else duplication, if the smallest argument is in
-/// the window too (always when InWindow), else rj_outside_window.
-template <class T, bool WithRf, bool InWindow = false>
-APSE_FUNC RfRj<T> rj_dispatch(T x, T y, T z, T p) noexcept {
-    // (Three call sites: with one, on pairs chosen by selects, g++ lays out the duplication
-    // path 13% slower; in device code cel_rj is not inlined, so the copies cost nothing.)
-    if (x == T(0) && cel_suits(y, z, p)) return cel_rj<T, WithRf>(y, z, p);
-    if (y == T(0) && cel_suits(x, z, p)) return cel_rj<T, WithRf>(x, z, p);
-    if (z == T(0) && cel_suits(x, y, p)) return cel_rj<T, WithRf>(x, y, p);
-    if constexpr (!InWindow) {
-        if (!(min_of(min_of(x, y), min_of(z, p)) >= rj_window_lo<T>()))
-            return rj_outside_window<T, WithRf>(x, y, z, p);
-    }
-    return rj_core_unscaled<T, WithRf>(x, y, z, p);
-}
+template <class T, bool WithRf, bool InWindow = false> APSE_FUNC RfRj<T> rj_dispatch(T x, T y, T z, T p) noexcept;
 
 /// R_J (and optionally R_F) for arguments whose nonzero values are within rj_spread_ok (mx the
 /// largest, mn the smallest nonzero one): scaled by the power of 4 that centres them in the
@@ -660,6 +642,24 @@ APSE_FUNC APSE_COLD RfRj<T> rj_outside_window(T x, T y, T z, T p) noexcept {
     const T mx = max_of(max_of(x, y), max_of(z, p)), mn = min_of(min_nonzero_of(x, y, z), p);
     if (rj_spread_ok(mn, mx)) return rj_window<T, WithRf>(x, y, z, p, mx, mn);
     return rj_wide<T, WithRf>(x, y, z, p);
+}
+
+/// R_J (and optionally R_F) for valid finite arguments whose largest one is in the kernels'
+/// window (RjWindow): the AGM when one of x, y, z is zero (complete integral; 2-3x faster;
+/// accurate for any smaller nonzero argument), else duplication, if the smallest argument is in
+/// the window too (always when InWindow), else rj_outside_window.
+template <class T, bool WithRf, bool InWindow>
+APSE_FUNC RfRj<T> rj_dispatch(T x, T y, T z, T p) noexcept {
+    // (Three call sites: with one, on pairs chosen by selects, g++ lays out the duplication
+    // path 13% slower; in device code cel_rj is not inlined, so the copies cost nothing.)
+    if (x == T(0) && cel_suits(y, z, p)) return cel_rj<T, WithRf>(y, z, p);
+    if (y == T(0) && cel_suits(x, z, p)) return cel_rj<T, WithRf>(x, z, p);
+    if (z == T(0) && cel_suits(x, y, p)) return cel_rj<T, WithRf>(x, y, p);
+    if constexpr (!InWindow) {
+        if (!(min_of(min_of(x, y), min_of(z, p)) >= rj_window_lo<T>()))
+            return rj_outside_window<T, WithRf>(x, y, z, p);
+    }
+    return rj_core_unscaled<T, WithRf>(x, y, z, p);
 }
 
 /// R_J (and optionally R_F) for valid finite arguments: the kernels in their window (the
