@@ -255,6 +255,16 @@ TEST_CASE("elliptic: widely spread arguments (up to the whole exponent range) st
     CHECK(rel_error(apse::ellint_pi(-big, 1.0, -big), 7.4583407312002071573e-155) <= 16 * e);
     // n near -DBL_MAX with m < 0: |n| s c R_C(...) overflowed before its division (a fuzz finding).
     CHECK(rel_error(apse::ellint_pi(-1e308, 1.5, -1e-12), 1.5707963267948966106e-154) <= 16 * e);
+    // Every argument the smallest subnormal (fuzz findings: NaN, 1/mean overflowed; mpmath, 50
+    // digits): R_F(d, d, d) = 1/sqrt(d), R_F(d, d, 2^1023) and R_F(2^-1070, 2^-1000, 2^1023) (the
+    // 1/64 rescaling against overflow flushed the small ones), R_D beyond the range: inf.
+    CHECK(rel_error(apse::carlson_rf(0x1p-1074, 0x1p-1074, 0x1p-1074), 4.4989137945431963828e+161) <= 4 * e);
+    CHECK(rel_error(apse::carlson_rf(0x1p-1074, 0x1p-1074, 0x1p1023), 0x1.0131fa9e773b1p-502) <= 4 * e);
+    CHECK(rel_error(apse::carlson_rf(0x1p-1070, 0x1p-1000, 0x1p1023), 0x1.f0beedadf9577p-503) <= 4 * e);
+    CHECK(std::isinf(apse::carlson_rd(0x1p-1074, 0x1p-1074, 0x1p-1074)));
+    CHECK(rel_error(double(apse::carlson_rf(0x1p-149f, 0x1p-149f, 0x1p-149f)), 26713738906281537970891.923) <= 4 * eps<float>());
+    CHECK(rel_error(double(apse::carlson_rf(0x1p-149f, 0x1p-149f, 1.7014118346046923e+38f)), 0x1.108302f53a277p-57) <=
+          4 * eps<float>());
     // -0 is a valid zero argument: R_C(0, 2) = pi / (2 sqrt 2).
     CHECK(rel_error(apse::carlson_rc(-0.0, 2.0), 1.1107207345395915618) <= 4 * e);
     CHECK(rel_error(double(apse::carlson_rc(-0.0f, 2.0f)), 1.1107207345395915618) <= 4 * eps<float>());

@@ -330,6 +330,13 @@ template <class T> APSE_FUNC T log_ratio(T a, T b) noexcept {
 
 template <class T> APSE_FUNC T rf_core(T x, T y, T z) noexcept;
 
+/// R_F and R_D duplications need 1/mean finite: below this sum of the arguments they scale up by
+/// 4^tiny_scale (exact: 2^-100 and 2^64 in float, 2^-900 and 2^200 in double).
+template <class T> APSE_FUNC constexpr T tiny_sum() noexcept {
+    return sizeof(T) == sizeof(float) ? T(0x1p-100) : T(0x1p-900);
+}
+template <class T> APSE_FUNC constexpr int tiny_scale() noexcept { return sizeof(T) == sizeof(float) ? 32 : 100; }
+
 /// R_F(x, y, z) (no zero argument) when the sum of the arguments over the tolerance overflows.
 /// R_F(v/64) = 8 R_F(v) scales exactly unless the smallest argument then loses bits in the
 /// subnormals (it is below 2^-1016 in double, then 2^2030 below the largest; a fuzz finding,
@@ -358,6 +365,10 @@ template <class T> APSE_FUNC T rf_core(T x, T y, T z) noexcept {
     if (z == T(0)) return agm_rf(x, y);
     // The mean, or the step count's q (<= the sum / tolerance, ~30x), would overflow: rescaled.
     if (!is_finite((x + y + z) * (T(1) / rf_tolerance<T>()))) return rf_huge(x, y, z);
+    // So small that 1/mean would overflow (R_F(d, d, d) at the smallest subnormal d was NaN; a
+    // fuzz finding): R_F(v) = 2^k R_F(4^k v), an exact scaling up.
+    if (x + y + z < tiny_sum<T>()) return std::ldexp(rf_duplication(std::ldexp(x, 2 * tiny_scale<T>()),
+        std::ldexp(y, 2 * tiny_scale<T>()), std::ldexp(z, 2 * tiny_scale<T>())), tiny_scale<T>());
     return rf_duplication(x, y, z);
 }
 
@@ -687,6 +698,10 @@ template <class T> APSE_FUNC APSE_NOINLINE T rd_core(T x, T y, T z) noexcept {
     if (!is_finite((x + y + T(3) * z) * (T(1) / rj_tolerance<T>()))) {
         x *= T(0.015625), y *= T(0.015625), z *= T(0.015625);
         scale = T(1) / T(512);
+    } else if (x + y + T(3) * z < tiny_sum<T>()) {  // 1/mean would overflow: R_D(v) = 8^k R_D(4^k v)
+        x = std::ldexp(x, 2 * tiny_scale<T>()), y = std::ldexp(y, 2 * tiny_scale<T>()), z = std::ldexp(z, 2 * tiny_scale<T>());
+        const T r = rd_core(x, y, z);
+        return std::ldexp(r, 3 * tiny_scale<T>());
     }
     const T a0 = (x + y + T(3) * z) * T(0.2);
     const T dx = a0 - x, dy = a0 - y;
