@@ -262,6 +262,8 @@ TEST_CASE("elliptic: widely spread arguments (up to the whole exponent range) st
     CHECK(rel_error(apse::carlson_rf(0x1p-1074, 0x1p-1074, 0x1p1023), 0x1.0131fa9e773b1p-502) <= 4 * e);
     CHECK(rel_error(apse::carlson_rf(0x1p-1070, 0x1p-1000, 0x1p1023), 0x1.f0beedadf9577p-503) <= 4 * e);
     CHECK(std::isinf(apse::carlson_rd(0x1p-1074, 0x1p-1074, 0x1p-1074)));
+    CHECK(rel_error(apse::carlson_rd(0x1p1023, 0x1p-1074, 0x1p-1074), 0x1.0f876ccdf6cd9p+563) <= 8 * e);
+    CHECK(rel_error(double(apse::carlson_rd(0x1p127f, 0x1p-149f, 0x1p-149f)), 0x1.0f876ccdf6cd9p+86) <= 8 * eps<float>());
     CHECK(rel_error(double(apse::carlson_rf(0x1p-149f, 0x1p-149f, 0x1p-149f)), 26713738906281537970891.923) <= 4 * eps<float>());
     CHECK(rel_error(double(apse::carlson_rf(0x1p-149f, 0x1p-149f, 1.7014118346046923e+38f)), 0x1.108302f53a277p-57) <=
           4 * eps<float>());
