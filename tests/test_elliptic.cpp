@@ -255,6 +255,11 @@ TEST_CASE("elliptic: widely spread arguments (up to the whole exponent range) st
     CHECK(rel_error(apse::ellint_pi(-big, 1.0, -big), 7.4583407312002071573e-155) <= 16 * e);
     // n near -DBL_MAX with m < 0: |n| s c R_C(...) overflowed before its division (a fuzz finding).
     CHECK(rel_error(apse::ellint_pi(-1e308, 1.5, -1e-12), 1.5707963267948966106e-154) <= 16 * e);
+    // |m| near DBL_MAX with n < -1/4: R_J(0, 1-m, 1, q) underflowed where (1-m) R_J does not (a
+    // fuzz finding; mpmath, 60 digits).
+    CHECK(rel_error(apse::comp_ellint_pi(-5080598558.875948, -1.7976931345577664e+308), 2.5687282962134502e-152) <= 16 * e);
+    CHECK(rel_error(apse::ellint_pi(-5080598558.875948, -3.0, -1.7976931345577664e+308), -2.5687282962518808e-152) <=
+          16 * e);
     // Every argument the smallest subnormal (fuzz findings: NaN, 1/mean overflowed; mpmath, 50
     // digits): R_F(d, d, d) = 1/sqrt(d), R_F(d, d, 2^1023) and R_F(2^-1070, 2^-1000, 2^1023) (the
     // 1/64 rescaling against overflow flushed the small ones), R_D beyond the range: inf.
