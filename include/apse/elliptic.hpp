@@ -94,13 +94,10 @@ template <class T> APSE_FUNC T k_impl(T m) noexcept {
 /// errors by at most 1 + |n|.
 template <class T> APSE_FUNC constexpr T pi_direct_bound() noexcept { return T(0.25); }
 
-/// 0, or for 1 - m above 2^500 (double) / 2^60 (float) the k of the scaling by 4^-k that brings
-/// it to ~1 (the n < -1/4, m < 0 forms of Pi, whose R_J would underflow; a fuzz finding).
-template <class T> APSE_FUNC int huge_m_scale(T mc) noexcept {
-    if (!(mc > (sizeof(T) == sizeof(float) ? T(0x1p60) : T(0x1p500)))) return 0;
-    int e = 0;
-    (void)std::frexp(mc, &e);
-    return e / 2;
+/// 1 - m above 2^500 (double) / 2^60 (float): the n < -1/4, m < 0 forms of Pi then rescale their
+/// R_J, which would underflow where (1 - m) R_J does not (a fuzz finding).
+template <class T> APSE_FUNC bool huge_m(T mc) noexcept {
+    return mc > (sizeof(T) == sizeof(float) ? T(0x1p60) : T(0x1p500));
 }
 
 template <class T> APSE_FUNC T comp_pi_valid(T n, T m) noexcept {
@@ -120,16 +117,15 @@ template <class T> APSE_FUNC T comp_pi_valid(T n, T m) noexcept {
     // n < 0, m < 0: (K + |n|(1-m)/(3(1-n)) R_J(0, 1-m, 1, q)) / (1-n), q = (1-m)/(1-n)
     // (DLMF 19.21.12 with (p-0)(q-0) = (1-m); all terms positive).
     const T np = T(1) + nn;
-    const int k = huge_m_scale(mc);
-    if (k == 0) {
+    if (!huge_m(mc)) {
         const RfRj<T> r = rj_core<T, true>(T(0), mc, T(1), mc / np);
         return (r.rf + nn * ((mc / np) * (T(1) / T(3)) * r.rj)) / np;
     }
-    // 1-m so large that R_J underflows where (1-m) R_J does not: the arguments scaled by 4^-k
-    // (R_F(v) = 2^-k R_F(4^-k v), (1-m) R_J(v) = 2^-k (4^-k (1-m)) R_J(4^-k v))
-    const T mcs = std::ldexp(mc, -2 * k);
-    const RfRj<T> r = rj_core<T, true>(T(0), mcs, std::ldexp(T(1), -2 * k), mcs / np);
-    return std::ldexp(r.rf + nn * ((mcs / np) * (T(1) / T(3)) * r.rj), -k) / np;
+    // 1-m so large that R_J underflows where (1-m) R_J does not: homogeneity with l = (1-n)/(1-m),
+    // R_F(v) = sqrt(l) R_F(l v), (1-m) R_J(v) = (1-n) sqrt(l) R_J(l v), l v = (0, 1-n, l, 1)
+    const T l = np / mc;
+    const RfRj<T> r = rj_core<T, true>(T(0), np, l, T(1));
+    return (r.rf + nn * (T(1) / T(3)) * r.rj) * std::sqrt(l) / np;
 }
 
 template <class T> APSE_FUNC T comp_pi_impl(T n, T m) noexcept {
@@ -169,15 +165,14 @@ template <class T> APSE_FUNC T pi_impl(T n, T phi, T m) noexcept {
         // q = c^2 + (1-m) s^2/(1-n) (DLMF 19.21.12 with c^2 as the distinguished argument).
         const T nn = -n, np = T(1) + nn, mc = T(1) - m;
         const T p = c2 + np * s2, q = c2 + mc * s2 / np;
-        const int k = huge_m_scale(mc);
-        if (k == 0) {
+        if (!huge_m(mc)) {
             const RfRj<T> r = rj_core<T, true>(c2, y, T(1), q);
             v = (s * r.rf + nn * (s * c * (rc_core(y / p, q) / std::sqrt(p))) +
                  nn * ((mc / np) * (T(1) / T(3)) * s3 * r.rj)) / np;
-        } else {  // as in comp_pi_valid: the R_J arguments scaled by 4^-k
-            const T mcs = std::ldexp(mc, -2 * k), sc = std::ldexp(T(1), -2 * k);
-            const RfRj<T> r = rj_core<T, true>(c2 * sc, std::ldexp(y, -2 * k), sc, std::ldexp(q, -2 * k));
-            v = (std::ldexp(s * r.rf + nn * ((mcs / np) * (T(1) / T(3)) * s3 * r.rj), -k) +
+        } else {  // as in comp_pi_valid, l = (1-n)/(1-m): l v = (l c^2, l c^2 + (1-n) s^2, l, l c^2 + s^2)
+            const T l = np / mc, lc2 = l * c2;
+            const RfRj<T> r = rj_core<T, true>(lc2, lc2 + np * s2, l, lc2 + s2);
+            v = ((s * r.rf + nn * (T(1) / T(3)) * s3 * r.rj) * std::sqrt(l) +
                  nn * (s * c * (rc_core(y / p, q) / std::sqrt(p)))) / np;
         }
     }
