@@ -30,7 +30,6 @@
 /// few: a mispredicted one discards the duplication steps already in flight behind it.
 
 #include <cmath>
-#include <limits>
 
 #include "../config.hpp"
 #include "../math.hpp"
@@ -700,7 +699,8 @@ template <class T> APSE_FUNC APSE_NOINLINE T rd_core(T x, T y, T z) noexcept {
         // R_D(v/64) = 512 R_D(v), unless a small argument would lose bits in the subnormals (a
         // fuzz finding, R_D(1.7e38, 1e-45, 1e-45) in float: NaN): then R_D = R_J(x, y, z, z),
         // whose scaling handles any spread
-        if (!(min_of(x, y) * T(0.015625) >= std::numeric_limits<T>::min())) return rj_core(x, y, z, z).rj;
+        if (!(min_of(x, y) * T(0.015625) >= (sizeof(T) == sizeof(float) ? T(0x1p-126) : T(0x1p-1022))))
+            return rj_core(x, y, z, z).rj;
         x *= T(0.015625), y *= T(0.015625), z *= T(0.015625);
         scale = T(1) / T(512);
     } else if (x + y + T(3) * z < tiny_sum<T>()) {  // 1/mean would overflow: R_D(v) = 8^k R_D(4^k v)
