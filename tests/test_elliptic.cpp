@@ -7,7 +7,9 @@
 
 #include "support/reference_table.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <limits>
 #include <string>
@@ -251,6 +253,25 @@ TEST_CASE("elliptic: widely spread arguments (up to the whole exponent range) st
     CHECK(rel_error(apse::carlson_rd(big, 4.0, 1.7014118346046923e38), 1.3150856094050418967e-192) <= 8 * e);
     CHECK(rel_error(apse::comp_ellint_pi(-big, -big), 7.4583407312002071573e-155) <= 16 * e);
     CHECK(rel_error(apse::ellint_pi(-big, 1.0, -big), 7.4583407312002071573e-155) <= 16 * e);
+    // n near -DBL_MAX with m < 0: |n| s c R_C(...) overflowed before its division (a fuzz finding).
+    CHECK(rel_error(apse::ellint_pi(-1e308, 1.5, -1e-12), 1.5707963267948966106e-154) <= 16 * e);
+    // |m| near DBL_MAX with n < -1/4: R_J(0, 1-m, 1, q) underflowed where (1-m) R_J does not (a
+    // fuzz finding; mpmath, 60 digits).
+    CHECK(rel_error(apse::comp_ellint_pi(-5080598558.875948, -1.7976931345577664e+308), 2.5687282962134502e-152) <= 16 * e);
+    CHECK(rel_error(apse::ellint_pi(-5080598558.875948, -3.0, -1.7976931345577664e+308), -2.5687282962518808e-152) <=
+          16 * e);
+    // Every argument the smallest subnormal (fuzz findings: NaN, 1/mean overflowed; mpmath, 50
+    // digits): R_F(d, d, d) = 1/sqrt(d), R_F(d, d, 2^1023) and R_F(2^-1070, 2^-1000, 2^1023) (the
+    // 1/64 rescaling against overflow flushed the small ones), R_D beyond the range: inf.
+    CHECK(rel_error(apse::carlson_rf(0x1p-1074, 0x1p-1074, 0x1p-1074), 4.4989137945431963828e+161) <= 4 * e);
+    CHECK(rel_error(apse::carlson_rf(0x1p-1074, 0x1p-1074, 0x1p1023), 0x1.0131fa9e773b1p-502) <= 4 * e);
+    CHECK(rel_error(apse::carlson_rf(0x1p-1070, 0x1p-1000, 0x1p1023), 0x1.f0beedadf9577p-503) <= 4 * e);
+    CHECK(std::isinf(apse::carlson_rd(0x1p-1074, 0x1p-1074, 0x1p-1074)));
+    CHECK(rel_error(apse::carlson_rd(0x1p1023, 0x1p-1074, 0x1p-1074), 0x1.0f876ccdf6cd9p+563) <= 8 * e);
+    CHECK(rel_error(double(apse::carlson_rd(0x1p127f, 0x1p-149f, 0x1p-149f)), 0x1.0f876ccdf6cd9p+86) <= 8 * eps<float>());
+    CHECK(rel_error(double(apse::carlson_rf(0x1p-149f, 0x1p-149f, 0x1p-149f)), 26713738906281537970891.923) <= 4 * eps<float>());
+    CHECK(rel_error(double(apse::carlson_rf(0x1p-149f, 0x1p-149f, 1.7014118346046923e+38f)), 0x1.108302f53a277p-57) <=
+          4 * eps<float>());
     // -0 is a valid zero argument: R_C(0, 2) = pi / (2 sqrt 2).
     CHECK(rel_error(apse::carlson_rc(-0.0, 2.0), 1.1107207345395915618) <= 4 * e);
     CHECK(rel_error(double(apse::carlson_rc(-0.0f, 2.0f)), 1.1107207345395915618) <= 4 * eps<float>());
@@ -263,6 +284,58 @@ TEST_CASE("elliptic: widely spread arguments (up to the whole exponent range) st
     CHECK(rel_error(double(apse::carlson_rd(1.0f, 1e30f, 1.0f)), 1.4999999887144004625e-15) <= 8 * ef);
     CHECK(rel_error(double(apse::ellint_f(1.0f, -3e38f)), 2.6027027953806862106e-18) <= 8 * ef);
     CHECK(rel_error(double(apse::ellint_pi(-1e30f, 1.0f, -1e30f)), 9.9999999247626697497e-16) <= 16 * ef);
+}
+
+TEST_CASE("elliptic: R_J with arguments spread over the whole exponent range", "[elliptic][robust][extreme]") {
+    // tests/data/elliptic/carlson_rj_wide.csv (tools/gen_elliptic_reference.py): e.g.
+    // R_J(1e300, 1e-300, 1e-300, 0.5), NaN before (a fuzz finding), one huge argument with the
+    // others tiny in every position, p tiny or huge, two groups of arguments far apart; inputs
+    // exact in double (wide_double) or float (wide_float), references normal numbers of that
+    // type. Budget 8 eps, that of the R_J table: the reductions used there (rj_wide) err by
+    // < 2^-98 relative, and their closed forms (R_C, R_F) stay within the table's errors. The
+    // reference has 30 digits (nothing added for it).
+    const std::vector<Row> rows = read_table("carlson_rj_wide", 4);
+    REQUIRE(rows.size() >= 60);
+    double worst_d = 0, worst_f = 0;
+    std::size_t n_d = 0, n_f = 0;
+    for (const Row& r : rows) {
+        INFO(r.line);
+        const double ref = double(r.ref);
+        if (r.category == "wide_double") {
+            const double e = rel_error(apse::carlson_rj(r.in[0], r.in[1], r.in[2], r.in[3]), ref) / eps<double>();
+            CHECK(e <= 8);
+            worst_d = std::max(worst_d, e);
+            ++n_d;
+        } else {
+            REQUIRE(r.category == "wide_float");
+            float a[4];
+            for (int i = 0; i < 4; ++i) {
+                a[i] = float(r.in[i]);
+                REQUIRE(double(a[i]) == r.in[i]);  // exact in float
+            }
+            const double e = rel_error(double(apse::carlson_rj(a[0], a[1], a[2], a[3])), ref) / eps<float>();
+            CHECK(e <= 8);
+            worst_f = std::max(worst_f, e);
+            ++n_f;
+        }
+    }
+    CHECK(n_d >= 15);
+    CHECK(n_f >= 40);
+    std::printf("R_J wide table: %zu double rows, max %.2f eps; %zu float rows, max %.2f eps\n", n_d, worst_d, n_f,
+                worst_f);
+    // Beyond the type's range the result is inf (overflow) or 0 / subnormal (underflow), never
+    // NaN (mpmath at 700 digits): R_J(1e300, 1e300, 1e300, 1e-300) = 2.1e-447,
+    // R_J(1e-300, 1e-300, 2e-300, 1e-300) = 8.0e449; R_J(1e-300, 1e-300, 1e-300, 1e300) is normal.
+    // float: R_J(1e36, 1e36, 1e36, 1e-36) ~ 2e-52, R_J(1e-30, 1e-30, 2e-30, 1e-30) ~ 8e44.
+    CHECK(apse::carlson_rj(1e300, 1e300, 1e300, 1e-300) == 0.0);
+    CHECK(std::isinf(apse::carlson_rj(1e-300, 1e-300, 2e-300, 1e-300)));
+    CHECK(rel_error(apse::carlson_rj(1e-300, 1e-300, 1e-300, 1e300), 2.9999999999999998049e-150) <= 8 * eps<double>());
+    CHECK(apse::carlson_rj(1e36f, 1e36f, 1e36f, 1e-36f) == 0.0f);
+    // -0 is a valid zero argument on these paths too (a fuzz finding: R_C(-0, y) was NaN there;
+    // mpmath at 800 digits): p >> x, y, z (the reduction of p), and the widest gap splitting.
+    CHECK(rel_error(apse::carlson_rj(-0.0, 1e-300, 1e-300, 0.5), 9.4247779607693795973e+150) <= 8 * eps<double>());
+    CHECK(rel_error(apse::carlson_rj(-0.0, 1e-300, 1e300, 1e-200), 3.4746720549078668556e+52) <= 8 * eps<double>());
+    CHECK(std::isinf(apse::carlson_rj(1e-30f, 1e-30f, 2e-30f, 1e-30f)));
 }
 
 TEMPLATE_TEST_CASE("elliptic: pathological inputs return quickly, finite or NaN", "[elliptic][robust][denormals]",

@@ -11,6 +11,7 @@ Writes one CSV per function into tests/data/elliptic/ (or --out DIR):
     ellint_pi.csv      n,phi,m,value,category      Pi(n;phi|m)
     comp_ellint_k.csv  m,value,category            K(m)
     comp_ellint_pi.csv n,m,value,category          Pi(n|m)
+    carlson_rj_wide.csv x,y,z,p,value,category     R_J over the whole exponent range (see below)
 
 Legendre integrals use the PARAMETER m = k^2 (as mpmath and DLMF), and the sign convention
 Pi(n;phi|m) = int_0^phi dtheta / ((1 - n sin^2 theta) sqrt(1 - m sin^2 theta)).
@@ -34,6 +35,17 @@ evaluation: mp.quad (tanh-sinh) of the DEFINING integral at the same precision, 
 "random" row and for every special-case row. The script aborts (exit status 1, nothing written)
 if any cross-check disagrees by more than 1e-25 relative. It also checks a few exact identities
 (R_D(x,y,z) = R_J(x,y,z,z), Pi(0;phi|m) = F(phi|m), ...).
+
+carlson_rj_wide.csv holds R_J at arguments spread over the whole exponent range of double
+(category wide_double: inputs exact in binary64, subnormals included) or of float (wide_float:
+exact in binary32), e.g. R_J(1e300, 1e-300, 1e-300, 0.5): one huge argument and the others tiny,
+in every position, p anywhere, and the other splits of the four arguments into a large and a
+small group. Only rows whose reference is a normal number of that type are kept. mpmath's elliprj
+needs about as many digits as the arguments' ratio has (at 40 digits it returns inf for the
+example), so these references use mp.dps = 40 + 1.1 log10(max/min) and are checked against the
+same evaluation at 20 more digits and against the quadrature (every float row, every 3rd double
+row: seconds each), whose integrand is normalised by the size of the result (mp.quad's
+tolerance is absolute).
 
 The output is deterministic (fixed seed, no time stamps): running it twice gives byte-identical
 files.
@@ -470,6 +482,133 @@ def build_tables(r):
 
 
 # ---------------------------------------------------------------------------------------------
+# R_J over the whole exponent range
+# ---------------------------------------------------------------------------------------------
+
+DBL_MIN, DBL_MAX = 2.0 ** -1022, 1.7976931348623157e308
+FLT_MIN, FLT_MAX = 2.0 ** -126, 3.4028234663852886e38
+
+
+def wide_dps(args):
+    pos = [mpf(a) for a in args if a > 0]
+    return int(DPS + 1.1 * float(mpmath.log10(max(pos) / min(pos))))
+
+
+def wide_rj(args, extra=0):
+    with mpmath.workdps(wide_dps(args) + extra):
+        return +mpmath.elliprj(*[mpf(a) for a in args])
+
+
+def wide_quad(args):
+    """The quadrature of quad_rj with the integrand scaled to a result of order 1."""
+    with mpmath.workdps(DPS):
+        scale = mpmath.ldexp(1, -int(mpmath.floor(mpmath.log(wide_rj(args), 2))))
+        x, y, z, p = [mpf(a) for a in args]
+        f = lambda t: scale / ((t + p) * mpmath.sqrt((t + x) * (t + y) * (t + z)))
+        return 3 * carlson_quad(f, [x, y, z, p]) / 2 / scale
+
+
+def wide_rows(r):
+    """(inputs, category): per type, one huge argument with the others tiny in every position
+    (x huge, y and z tiny, p anywhere, and permutations), p tiny or huge, and random splits of
+    the four arguments into two groups a large factor apart; a zero argument in some rows."""
+    rows = []
+    for kind, (lo, hi), rnd, n in (('wide_double', (-1074, 1023), float, 12),
+                                   ('wide_float', (-149, 127), f32, 24)):
+        span = hi - lo
+
+        def val(e):
+            e = min(max(e, lo), hi - 1)
+            v = rnd(r.uniform(1.0, 2.0) * 2.0 ** e)
+            return v if v > 0 else rnd(2.0 ** lo)
+
+        # the finding's family: x huge, y and z tiny, p anywhere (and the other positions)
+        for i in range(n):
+            big = r.uniform(hi - span * 0.15, hi - 1)
+            small = [r.uniform(lo, lo + span * 0.45) for _ in range(2)]
+            pe = r.uniform(lo, hi - 1)
+            v = [val(big), val(small[0]), val(small[1])]
+            if i % 6 == 5:
+                v[1] = 0.0
+            j = i % 3
+            v[0], v[j] = v[j], v[0]
+            rows.append((v + [val(pe)], kind))
+        # p tiny or huge, x, y, z spread
+        for i in range(n // 2):
+            v = [val(r.uniform(lo, hi)) for _ in range(3)]
+            pe = r.uniform(lo, lo + span * 0.1) if i % 2 == 0 else r.uniform(hi - span * 0.1, hi - 1)
+            rows.append((v + [val(pe)], kind))
+        # two groups: k of the four arguments large, the others small
+        for i in range(n):
+            gap = r.uniform(span * 0.3, span * 0.9)
+            base = r.uniform(lo, hi - gap)
+            es = [base + r.uniform(0, (span - gap) * 0.1) for _ in range(4)]
+            for k in r.sample(range(4), 1 + i % 3):
+                es[k] += gap
+            v = [val(e) for e in es]
+            if i % 8 == 7:
+                v[r.randrange(3)] = 0.0
+            rows.append((v, kind))
+    return rows
+
+
+def build_wide(r, stats):
+    """The rows of carlson_rj_wide.csv whose reference is a normal number of their type."""
+    out = []
+    for inputs, category in wide_rows(r):
+        assert sum(v == 0 for v in inputs[:3]) <= 1 and inputs[3] > 0
+        v = wide_rj(inputs)
+        tiny, huge = (DBL_MIN, DBL_MAX) if category == 'wide_double' else (FLT_MIN, FLT_MAX)
+        if not (tiny <= v <= huge):
+            continue
+        checks = [(wide_rj(inputs, 20), 'mpmath at 20 more digits')]
+        # the quadrature over ~2000 decades takes seconds: every 3rd wide_double row, every wide_float row
+        if category == 'wide_float' or len(out) % 3 == 0:
+            checks.append((wide_quad(inputs), 'quadrature'))
+        for check, what in checks:
+            e = relerr(v, check)
+            stats['checked'] += 1
+            if e > stats['max'].get('carlson_rj_wide', (mpf(-1),))[0]:
+                stats['max']['carlson_rj_wide'] = (e, inputs, category)
+            if e > TOL:
+                raise SystemExit('CROSS-CHECK FAILED carlson_rj_wide%s [%s]: %s vs %s %s'
+                                 % (inputs, category, mpmath.nstr(v, 35), what, mpmath.nstr(check, 35)))
+        out.append((tuple(inputs), category, v))
+    return out
+
+
+def write_wide(rows, outdir):
+    cats = []
+    for _, c, _ in rows:
+        if c not in cats:
+            cats.append(c)
+    lines = [
+        '# apse elliptic-integral reference table: carlson_rj_wide',
+        '# generator: %s (mpmath %s, mp.dps = 40 + 1.1 log10(max/min), random.Random(%d))'
+        % (GENERATOR, mpmath.__version__, SEED + 2),
+        '# R_J(x,y,z,p) = 3/2 int_0^inf dt / ((t+p) sqrt((t+x)(t+y)(t+z))) with arguments spread over '
+        'the whole exponent range',
+        '# columns: inputs (x, y, z, p) as hexadecimal float literals, exact in binary64 (wide_double) '
+        'or binary32 (wide_float);',
+        '#   value = reference for those exact inputs, %d significant decimal digits, a normal number '
+        'of the category\'s type;' % VALUE_DIGITS,
+        '#   category = %s' % ' '.join(cats),
+        '# cross-checked against mpmath at 20 more digits (every row) and against mp.quad of the defining '
+        'integral, normalised (every wide_float row, every 3rd wide_double row), to < 1e-25 relative',
+        'x,y,z,p,value,category',
+    ]
+    for inputs, category, v in rows:
+        hx = [('0x0.0p+0' if a == 0 else float(a).hex()) for a in inputs]
+        if category == 'wide_float':
+            assert all(f32(a) == a for a in inputs)
+        lines.append(','.join(hx + [fmt_value(v), category]))
+    path = os.path.join(outdir, 'carlson_rj_wide.csv')
+    with open(path, 'w', newline='\n') as fh:
+        fh.write('\n'.join(lines) + '\n')
+    return path
+
+
+# ---------------------------------------------------------------------------------------------
 # Evaluation, cross-checks, output
 # ---------------------------------------------------------------------------------------------
 
@@ -603,10 +742,17 @@ def main():
                   % (t.name, len(t.rows), mpmath.nstr(e, 3), cat,
                      ','.join(repr(a) for a in inp), time.time() - t1))
     worst_id = identity_checks(tables, values)
+    t1 = time.time()
+    wide = build_wide(random.Random(SEED + 2), stats)
+    if not opts.quiet:
+        e, inp, cat = stats['max']['carlson_rj_wide']
+        print('%-15s %4d rows, max rel discrepancy vs 20 more digits / quadrature %s (%s)  [%.1fs]'
+              % ('carlson_rj_wide', len(wide), mpmath.nstr(e, 3), cat, time.time() - t1))
 
     os.makedirs(opts.out, exist_ok=True)
     for t, vals in zip(tables, values):
         write_table(t, vals, opts.out)
+    write_wide(wide, opts.out)
     if not opts.quiet:
         worst = max(e for e, _, _ in stats['max'].values())
         print('%d rows cross-checked by quadrature, max rel discrepancy %s; identities max %s'

@@ -6,7 +6,7 @@
 #             plugin tests (venv with the pinned wheels in build/release/mitsuba3) + the Doxygen
 #             API reference (warnings are errors)
 #   sanitize: g++, Debug, AddressSanitizer + UndefinedBehaviorSanitizer
-#   clang   : clang++, Release, plus libFuzzer runs from the committed corpora (70 s in all)
+#   clang   : clang++, Release, plus libFuzzer runs from the committed corpora (85 s in all)
 #   fastmath: g++ -O3 -ffast-math -fno-finite-math-only: the robustness (except denormal
 #             arguments, flushed to zero), statistics and fuzz-corpus tests
 #   fma-nosimd: g++ -march=x86-64-v3 (FMA contraction on) with APSE_NO_SIMD (the scalar pairs):

@@ -41,3 +41,16 @@
 #else
 #define APSE_NOINLINE
 #endif
+
+/// `APSE_COLD`: keeps a rarely taken internal path (e.g. the elliptic integrals' handling of
+/// arguments at the ends of the exponent range) out of line everywhere, so that it does not
+/// weigh on the inlining and code layout of the common path that calls it.
+#if defined(__CUDACC__)
+#define APSE_COLD __noinline__
+#elif defined(__GNUC__) || defined(__clang__)
+#define APSE_COLD __attribute__((noinline, cold))
+#elif defined(_MSC_VER)
+#define APSE_COLD __declspec(noinline)
+#else
+#define APSE_COLD
+#endif

@@ -90,6 +90,13 @@ template <class T> APSE_FUNC T k_impl(T m) noexcept {
 /// errors by at most 1 + |n|.
 template <class T> APSE_FUNC constexpr T pi_direct_bound() noexcept { return T(0.25); }
 
+/// True when the n < -1/4, m < 0 forms of Pi have an R_J argument q = c^2 + (1-m) s^2/(1-n) above
+/// 2^400 (double) / 2^50 (float): that R_J may underflow where (1-m) R_J does not (a fuzz
+/// finding, 1 - m near DBL_MAX), so it is computed on the arguments scaled by l = (1-n)/(1-m).
+template <class T> APSE_FUNC bool huge_q(T q) noexcept {
+    return q > (sizeof(T) == sizeof(float) ? T(0x1p50) : T(0x1p400));
+}
+
 template <class T> APSE_FUNC T comp_pi_valid(T n, T m) noexcept {
     const T mc = T(1) - m;
     if (n >= -pi_direct_bound<T>()) {  // K + (n/3) R_J(0, 1-m, 1, 1-n): no cancellation for n >= 0
@@ -107,8 +114,15 @@ template <class T> APSE_FUNC T comp_pi_valid(T n, T m) noexcept {
     // n < 0, m < 0: (K + |n|(1-m)/(3(1-n)) R_J(0, 1-m, 1, q)) / (1-n), q = (1-m)/(1-n)
     // (DLMF 19.21.12 with (p-0)(q-0) = (1-m); all terms positive).
     const T np = T(1) + nn;
-    const RfRj<T> r = rj_core<T, true>(T(0), mc, T(1), mc / np);
-    return (r.rf + nn * ((mc / np) * (T(1) / T(3)) * r.rj)) / np;
+    if (!huge_q(mc / np)) {
+        const RfRj<T> r = rj_core<T, true>(T(0), mc, T(1), mc / np);
+        return (r.rf + nn * ((mc / np) * (T(1) / T(3)) * r.rj)) / np;
+    }
+    // q so large that R_J underflows where (1-m) R_J does not: homogeneity with l = (1-n)/(1-m),
+    // R_F(v) = sqrt(l) R_F(l v), (1-m) R_J(v) = (1-n) sqrt(l) R_J(l v), l v = (0, 1-n, l, 1)
+    const T l = np / mc;
+    const RfRj<T> r = rj_core<T, true>(T(0), np, l, T(1));
+    return (r.rf + nn * (T(1) / T(3)) * r.rj) * std::sqrt(l) / np;
 }
 
 template <class T> APSE_FUNC T comp_pi_impl(T n, T m) noexcept {
@@ -148,8 +162,16 @@ template <class T> APSE_FUNC T pi_impl(T n, T phi, T m) noexcept {
         // q = c^2 + (1-m) s^2/(1-n) (DLMF 19.21.12 with c^2 as the distinguished argument).
         const T nn = -n, np = T(1) + nn, mc = T(1) - m;
         const T p = c2 + np * s2, q = c2 + mc * s2 / np;
-        const RfRj<T> r = rj_core<T, true>(c2, y, T(1), q);
-        v = (s * r.rf + nn * s * c * rc_core(y / p, q) / std::sqrt(p) + nn * ((mc / np) * (T(1) / T(3)) * s3 * r.rj)) / np;
+        if (!huge_q(q)) {
+            const RfRj<T> r = rj_core<T, true>(c2, y, T(1), q);
+            v = (s * r.rf + nn * (s * c * (rc_core(y / p, q) / std::sqrt(p))) +
+                 nn * ((mc / np) * (T(1) / T(3)) * s3 * r.rj)) / np;
+        } else {  // as in comp_pi_valid, l = (1-n)/(1-m): l v = (l c^2, l c^2 + (1-n) s^2, l, l c^2 + s^2)
+            const T l = np / mc, lc2 = l * c2;
+            const RfRj<T> r = rj_core<T, true>(lc2, lc2 + np * s2, l, lc2 + s2);
+            v = ((s * r.rf + nn * (T(1) / T(3)) * s3 * r.rj) * std::sqrt(l) +
+                 nn * (s * c * (rc_core(y / p, q) / std::sqrt(p)))) / np;
+        }
     }
     if (a.j != T(0)) v += T(2) * a.j * comp_pi_valid(n, m);
     return v;

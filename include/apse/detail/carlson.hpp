@@ -262,7 +262,7 @@ template <class T> APSE_FUNC APSE_NOINLINE T agm_rf(T y, T z) noexcept {
 ///
 /// cel_core takes the square roots big = sqrt(max(y, z)), small = sqrt(min(y, z)), q = sqrt p
 /// and starts from b = 1 instead of 1/q: it returns sqrt(p) R_J(0, y, z, p) (and R_F).
-/// Domain: cel_suits(y, z, p), max(y, z, p) in the range rj_scaled keeps.
+/// Domain: cel_suits(y, z, p), y, z, p in the kernels' window (RjWindow).
 template <class T, bool WithRf>
 APSE_FUNC APSE_NOINLINE RfRj<T> cel_core(T big, T small, T q) noexcept {
     constexpr T tolerance = sizeof(T) == sizeof(float) ? T(3.4e-4) : T(1.49e-8);  // sqrt(eps)
@@ -294,7 +294,7 @@ template <class T, bool WithRf> APSE_FUNC RfRj<T> cel_rj(T y, T z, T p) noexcept
 
 /// True when cel_rj is accurate and free of overflow for R_J(0, y, z, p): p >= 2^-64 max(y, z)
 /// (float), 2^-120 max(y, z) (double). Its largest coefficient, a ~ 2^n / p, then stays below
-/// 2^105 (float) within rj_scaled's range; smaller p is left to duplication. Covers the solid
+/// 2^105 (float) within the kernels' window (RjWindow); smaller p is left to duplication. Covers the solid
 /// angle of every spherical ellipse (p / max = cos^2 alpha >= 2^-52 resp. 2^-110 at the tangent caps).
 template <class T> APSE_FUNC bool cel_suits(T y, T z, T p) noexcept {
     constexpr T min_ratio = sizeof(T) == sizeof(float) ? T(0x1p-64) : T(0x1p-120);
@@ -315,15 +315,60 @@ template <class T> APSE_FUNC APSE_NOINLINE T rf_duplication(T x, T y, T z) noexc
     return rf_series(X * Y - Z * Z, X * Y * Z) / std::sqrt(a);
 }
 
+/// log 2.
+template <class T> constexpr T ln2_v = T(0.693147180559945309417232121458176568L);
+
+/// log(a / b) for positive finite a, b whose ratio may overflow or underflow.
+template <class T> APSE_FUNC T log_ratio(T a, T b) noexcept {
+    const T r = a / b;
+    if (r >= T(0x1p-1000) && r <= T(0x1p1000)) return std::log(r);
+    // |log(a/b)| > 693 here: the frexp split adds log(ma/mb) in (-0.7, 0.7) without cancellation
+    int ea = 0, eb = 0;
+    const T ma = std::frexp(a, &ea), mb = std::frexp(b, &eb);
+    return std::log(ma / mb) + T(ea - eb) * ln2_v<T>;
+}
+
+template <class T> APSE_FUNC T rf_core(T x, T y, T z) noexcept;
+
+/// R_F and R_D duplications need 1/mean finite: below this sum of the arguments they scale up by
+/// 4^tiny_scale (exact: 2^-100 and 2^64 in float, 2^-900 and 2^200 in double).
+template <class T> APSE_FUNC constexpr T tiny_sum() noexcept {
+    return sizeof(T) == sizeof(float) ? T(0x1p-100) : T(0x1p-900);
+}
+template <class T> APSE_FUNC constexpr int tiny_scale() noexcept { return sizeof(T) == sizeof(float) ? 32 : 100; }
+
+/// R_F(x, y, z) (no zero argument) when the sum of the arguments over the tolerance overflows.
+/// R_F(v/64) = 8 R_F(v) scales exactly unless the smallest argument then loses bits in the
+/// subnormals (it is below 2^-1016 in double, then 2^2030 below the largest; a fuzz finding,
+/// R_F(1e-45, 1e-45, 1.7e38) in float, flushed two arguments to zero: NaN). Then the arguments
+/// split at their wider gap G >= 2^1015: R_F(x, y, z) = R_F(0, y, z) (1 + O(G^-1/2)) for
+/// x << y <= z, and R_F(x, y, z) = R_C(z, c) (1 + O(G^-1 log G)), c = ((sqrt x + sqrt y)/2)^2,
+/// for x <= y << z (c makes int_0^inf (1/sqrt((t+x)(t+y)) - 1/(t+c)) dt vanish), where
+/// R_C(z, c) = log(2 sqrt(z/c))/sqrt(z) to within c/z. float computes in double.
+template <class T> APSE_FUNC APSE_COLD T rf_huge(T x, T y, T z) noexcept {
+    if constexpr (sizeof(T) == sizeof(float)) {
+        return T(rf_core(double(x), double(y), double(z)));
+    } else {
+        const T lo = min_of(min_of(x, y), z), hi = max_of(max_of(x, y), z);
+        const T mid = max_of(min_of(x, y), min_of(max_of(x, y), z));
+        if (lo >= T(0x1p-1016)) return T(0.125) * rf_duplication(x * T(0.015625), y * T(0.015625), z * T(0.015625));
+        if (std::ilogb(mid) - std::ilogb(lo) >= std::ilogb(hi) - std::ilogb(mid)) return agm_rf(mid, hi);
+        const T sc = T(0.5) * (std::sqrt(lo) + std::sqrt(mid)), sz = std::sqrt(hi);
+        return (log_ratio(sz, sc) + ln2_v<T>) / sz;
+    }
+}
+
 /// R_F(x, y, z) for valid finite arguments (at most one zero); the AGM when one is zero.
 template <class T> APSE_FUNC T rf_core(T x, T y, T z) noexcept {
     if (x == T(0)) return agm_rf(y, z);
     if (y == T(0)) return agm_rf(x, z);
     if (z == T(0)) return agm_rf(x, y);
-    // The mean, or the step count's q (<= the sum / tolerance, ~30x), would overflow:
-    // R_F(v/64) = 8 R_F(v).
-    if (!is_finite((x + y + z) * (T(1) / rf_tolerance<T>())))
-        return T(0.125) * rf_duplication(x * T(0.015625), y * T(0.015625), z * T(0.015625));
+    // The mean, or the step count's q (<= the sum / tolerance, ~30x), would overflow: rescaled.
+    if (!is_finite((x + y + z) * (T(1) / rf_tolerance<T>()))) return rf_huge(x, y, z);
+    // So small that 1/mean would overflow (R_F(d, d, d) at the smallest subnormal d was NaN; a
+    // fuzz finding): R_F(v) = 2^k R_F(4^k v), an exact scaling up.
+    if (x + y + z < tiny_sum<T>()) return std::ldexp(rf_duplication(std::ldexp(x, 2 * tiny_scale<T>()),
+        std::ldexp(y, 2 * tiny_scale<T>()), std::ldexp(z, 2 * tiny_scale<T>())), tiny_scale<T>());
     return rf_duplication(x, y, z);
 }
 
@@ -380,49 +425,79 @@ APSE_FUNC APSE_NOINLINE RfRj<T> rj_core_unscaled(T x, T y, T z, T p) noexcept {
     return r;
 }
 
-/// R_J (and optionally R_F) for valid finite arguments whose largest one is in a safe range:
-/// the AGM when one of x, y, z is zero (complete integral; 2-3x faster), else duplication.
-template <class T, bool WithRf>
-APSE_FUNC RfRj<T> rj_dispatch(T x, T y, T z, T p) noexcept {
-    // (Three call sites: with one, on pairs chosen by selects, g++ lays out the duplication
-    // path 13% slower; in device code cel_rj is not inlined, so the copies cost nothing.)
-    if (x == T(0) && cel_suits(y, z, p)) return cel_rj<T, WithRf>(y, z, p);
-    if (y == T(0) && cel_suits(x, z, p)) return cel_rj<T, WithRf>(x, z, p);
-    if (z == T(0) && cel_suits(x, y, p)) return cel_rj<T, WithRf>(x, y, p);
-    return rj_core_unscaled<T, WithRf>(x, y, z, p);
+/// The kernels' window [2^lo, 2^hi] (double: [2^-300, 2^300], float: [2^-32, 2^40]):
+/// duplication runs on the arguments as they are when all of them lie in it, Bulirsch's
+/// transformation (one zero argument) when the largest one does. There
+/// delta = prod (p - v) <= (2 max)^3, 1/d = 1/prod (sqrt p + sqrt v) <= min^(-3/2), the series'
+/// A^(-3/2) and Bulirsch's coefficients (cel_suits) are all finite, and a delta small enough to
+/// underflow belongs to an e_m = delta/d^2 below 2^-128 (d^2 >= min^3), which is negligible.
+/// (With only the largest argument in the window, as before, a small one let 1/d overflow and
+/// delta lose e_m: NaN or garbage, e.g. R_J(1e-90, 1e-135, 1e-135, 1e-118) in double.)
+template <class T> struct RjWindow {
+    static constexpr int lo = sizeof(T) == sizeof(float) ? -32 : -300;
+    static constexpr int hi = sizeof(T) == sizeof(float) ? 40 : 300;
+    /// Largest ratio of nonzero arguments that one power-of-4 scaling brings into the window
+    /// (its width less a margin for the rounding of the scale's exponent).
+    static constexpr int spread = hi - lo - 8;
+};
+template <class T> APSE_FUNC constexpr T rj_window_lo() noexcept {
+    return sizeof(T) == sizeof(float) ? T(0x1p-32) : T(0x1p-300);
+}
+template <class T> APSE_FUNC constexpr T rj_window_hi() noexcept {
+    return sizeof(T) == sizeof(float) ? T(0x1p40) : T(0x1p300);
 }
 
-/// R_J (and optionally R_F) for valid finite arguments. Rescales by a power of 4 when the
-/// largest argument is so large or small that delta = prod (p - v) (duplication) or
-/// 1/(p_n^2 + a_n g_n) (AGM) could overflow or lose precision to underflow (homogeneity:
-/// R_J(s v) = s^(-3/2) R_J(v), R_F(s v) = s^(-1/2) R_F(v); powers of 2 scale exactly).
+/// The median of three values.
+template <class T> APSE_FUNC T median_of(T x, T y, T z) noexcept {
+    return max_of(min_of(x, y), min_of(max_of(x, y), z));
+}
+
+/// The smallest nonzero one of x, y, z (at most one of them is zero).
+template <class T> APSE_FUNC T min_nonzero_of(T x, T y, T z) noexcept {
+    const T lo = min_of(min_of(x, y), z);
+    return lo > T(0) ? lo : median_of(x, y, z);
+}
+
+/// True when the nonzero values lo <= hi are within the factor 2^RjWindow::spread.
+template <class T> APSE_FUNC bool rj_spread_ok(T lo, T hi) noexcept {
+    constexpr T spread = sizeof(T) == sizeof(float) ? T(0x1p64) : T(0x1p592);
+    static_assert(RjWindow<float>::spread == 64 && RjWindow<double>::spread == 592, "");
+    return hi <= spread * lo;  // (an overflowing product means: within)
+}
+
+template <class T, bool WithRf, bool InWindow = false> APSE_FUNC RfRj<T> rj_dispatch(T x, T y, T z, T p) noexcept;
+
+/// R_J (and optionally R_F) for arguments whose nonzero values are within rj_spread_ok (mx the
+/// largest, mn the smallest nonzero one): scaled by the power of 4 that centres them in the
+/// kernels' window (exact; homogeneity scales the results back: R_J(s v) = s^(-3/2) R_J(v),
+/// R_F(s v) = s^(-1/2) R_F(v); the final ldexp rounds once where the result is subnormal).
 template <class T, bool WithRf>
-APSE_FUNC RfRj<T> rj_scaled(T x, T y, T z, T p) noexcept {
-    const T mx = max_of(max_of(x, y), max_of(z, p));
-    constexpr T hi = sizeof(T) == sizeof(float) ? T(0x1p40) : T(0x1p300);
-    constexpr T lo = sizeof(T) == sizeof(float) ? T(0x1p-32) : T(0x1p-300);
-    if (mx <= hi && mx >= lo) return rj_dispatch<T, WithRf>(x, y, z, p);
-    int ex = 0;
-    (void)std::frexp(mx, &ex);
-    // Scale by 4^-k. Small arguments: the largest lands in [1/4, 4). Large ones: the largest
-    // lands in [2^(e-2), 2^e), e = 24 (float) / 256 (double), inside the unscaled range, so that
-    // the other arguments keep as much of the exponent range as possible (landing the largest
-    // at 1 pushed arguments ~1e-308 of it into the subnormals and the scaled R_J to overflow).
-    constexpr int top_exponent = sizeof(T) == sizeof(float) ? 24 : 256;
-    const int k = mx > hi ? (ex - top_exponent) / 2 : ex / 2;
-    const T s = std::ldexp(T(1), -2 * k);
-    RfRj<T> r = rj_dispatch<T, WithRf>(x * s, y * s, z * s, p * s);
+APSE_FUNC APSE_NOINLINE RfRj<T> rj_window(T x, T y, T z, T p, T mx, T mn) noexcept {
+    int e_hi = 0, e_lo = 0;
+    (void)std::frexp(mx, &e_hi);
+    (void)std::frexp(mn, &e_lo);
+    const int k = (e_hi + e_lo - RjWindow<T>::lo - RjWindow<T>::hi) / 4;  // scale by 4^-k
+    constexpr int max_exponent = sizeof(T) == sizeof(float) ? 126 : 1022;
+    RfRj<T> r;
+    if (2 * k < max_exponent && -2 * k < max_exponent) {  // 4^-k representable: one product each
+        const T s = std::ldexp(T(1), -2 * k);
+        r = rj_dispatch<T, WithRf, true>(x * s, y * s, z * s, p * s);
+    } else {
+        r = rj_dispatch<T, WithRf, true>(std::ldexp(x, -2 * k), std::ldexp(y, -2 * k), std::ldexp(z, -2 * k),
+                                         std::ldexp(p, -2 * k));
+    }
     r.rj = std::ldexp(r.rj, -3 * k);
     if constexpr (WithRf) r.rf = std::ldexp(r.rf, -k);
     return r;
 }
 
-/// R_J (and optionally R_F) for valid finite arguments.
+/// R_J (and optionally R_F) when p exceeds x, y, z by far (p > 2^16 max(x, y, z)) and x, y, z
+/// are within rj_spread_ok.
 ///
-/// When p exceeds x, y, z by far, duplication converges only linearly (p shrinks 4x per step
-/// while lambda, which does not involve p, stays at the scale of x, y, z: ~log4(p / max) steps,
-/// beyond the step cap for ratios above ~2^110). Then DLMF 19.21.12, with y the middle argument
-/// and (p - y)(q - y) = (x - y)(z - y), i.e. q = y - (y - x)(z - y)/(p - y) in [x, y]:
+/// Duplication would converge only linearly (p shrinks 4x per step while lambda, which does
+/// not involve p, stays at the scale of x, y, z: ~log4(p / max) steps, beyond the step cap for
+/// ratios above ~2^110). Instead DLMF 19.21.12, with y the middle argument and
+/// (p - y)(q - y) = (x - y)(z - y), i.e. q = y - (y - x)(z - y)/(p - y) in [x, y]:
 ///   R_J(x,y,z,p) = (3 R_F(x,y,z) - 3 R_C(x z/y, p q/y) + (y - q) R_J(x,y,z,q)) / (p - y),
 /// whose terms do not cancel (R_C ~ log(p)/sqrt(p) << R_F) and whose R_J has a moderate q.
 ///
@@ -431,27 +506,185 @@ APSE_FUNC RfRj<T> rj_scaled(T x, T y, T z, T p) noexcept {
 /// does not involve p, cannot overflow where the result itself does not (e.g. arguments ~1e-28
 /// in float: R_J(x, y, z, q) ~ 1e42, R_J(x, y, z, p) ~ 1e35). If p overflows in the scaled
 /// units (p / max > ~2^126 in float), R_J = 3 R_F / p to within (max / p)^(1/2) log(p / max).
-template <class T, bool WithRf = false>
-APSE_FUNC RfRj<T> rj_core(T x, T y, T z, T p) noexcept {
+template <class T, bool WithRf>
+APSE_FUNC APSE_COLD RfRj<T> rj_reduce_p(T x, T y, T z, T p) noexcept {
+    x = std::fabs(x), y = std::fabs(y), z = std::fabs(z);  // -0 -> +0: R_C(-0, .) would be NaN
     T top = max_of(max_of(x, y), z);
-    if (!(p > T(0x1p16) * top)) return rj_scaled<T, WithRf>(x, y, z, p);
     int ex = 0;
     (void)std::frexp(top, &ex);
     const int k = ex / 2;
     x = std::ldexp(x, -2 * k), y = std::ldexp(y, -2 * k), z = std::ldexp(z, -2 * k);  // exact
     top = std::ldexp(top, -2 * k);
     const T ps = std::ldexp(p, -2 * k);  // may overflow: see above
-    const T lo = min_of(min_of(x, y), z), mid = max_of(min_of(x, y), min_of(max_of(x, y), z));
+    const T lo = min_of(min_of(x, y), z), mid = median_of(x, y, z);
     if (!is_finite(ps)) {
         const T rf = std::ldexp(rf_core(x, y, z), -k);  // R_F(v) = 2^-k R_F(4^-k v)
         return {rf, T(3) * rf / p};
     }
     const T shift = (mid - lo) * ((top - mid) / (ps - mid));  // y - q >= 0
     const T q = mid - shift;
-    const RfRj<T> r = rj_scaled<T, true>(x, y, z, q);
+    const RfRj<T> r = rj_window<T, true>(x, y, z, q, top, min_of(min_nonzero_of(x, y, z), q));
     const T rc = rc_core(top * (lo / mid), ps * (q / mid));
     // R_F(v) = 2^-k R_F(4^-k v), R_J(v) = 8^-k R_J(4^-k v)
     return {std::ldexp(r.rf, -k), std::ldexp((T(3) * (r.rf - rc) + shift * r.rj) / (ps - mid), -3 * k)};
+}
+
+template <class T, bool WithRf = false> APSE_FUNC RfRj<T> rj_core(T x, T y, T z, T p) noexcept;
+
+/// n / (d1 d2 d3) for positive finite d_i, without the intermediate overflow or underflow of
+/// the product (the exponents are taken out by frexp; ldexp rounds once at the end).
+template <class T> APSE_FUNC T quotient_scaled(T n, T d1, T d2, T d3 = T(1)) noexcept {
+    int e1 = 0, e2 = 0, e3 = 0;
+    const T m = std::frexp(d1, &e1) * std::frexp(d2, &e2) * std::frexp(d3, &e3);
+    return std::ldexp(n / m, -(e1 + e2 + e3));
+}
+
+/// R_J (and optionally R_F) for arguments spread too widely for one power-of-4 scaling to bring
+/// them into the kernels' window (nonzero arguments spanning more than 2^592 in double, 2^64
+/// in float; e.g. R_J(1e300, 1e-300, 1e-300, 0.5)). float is computed in double, whose window
+/// holds every float argument. In double, with the nonzero arguments sorted, the largest ratio
+/// G between neighbours is then at least 2^196 (at most three ratios): the arguments split into
+/// a large group L and a small group S that the integrand's scales separate, and R_J reduces to
+/// simpler integrals (docs/elliptic.md derives each; relative errors measured at 60 digits):
+///   L = {v}, S = {y, z, p}:  R_J = 3 R_C(a^2, b^2) / sqrt(v), a = p + sqrt(y z),
+///                            b = sqrt(p) (sqrt y + sqrt z)          (error ~ G^-1 log G)
+///   L = {p}, S = {x, y, z}:  R_J = 3 R_F(x, y, z) / p               (~ G^-1/2 log G)
+///   L = {y, z}, S = {x, p}:  R_J = 3 R_C(x, p) / sqrt(y z)          (~ G^-1/2)
+///   L = {z, p}, S = {x, y}:  R_J = R_J(z, c, c, p) = 3 (R_C(z, c) - R_C(z, p)) / (p - c),
+///                            c = ((sqrt x + sqrt y)/2)^2, R_C(z, c) = log(2 sqrt(z/c))/sqrt(z)
+///                                                                   (~ G^-1)
+///   L = {y, z, p}, S = {x}:  R_J = R_J(0, y, z, p), then again      (~ G^-1/2)
+///   L = {x, y, z}, S = {p}:  R_J = R_J(x, y, z, p') + 3 log(p'/p) / (2 sqrt(x y z)),
+///                            p' = p 2^j at 2^-100 of min(x, y, z), then again (~ 2^-100)
+/// (The first from int_0^inf dt/((t+p) sqrt((t+y)(t+z))) = 2 R_C(a^2, b^2), the fourth as
+/// c makes int_0^inf (1/sqrt((t+x)(t+y)) - 1/(t+c)) dt vanish.) Every term is positive. After
+/// at most two reductions (the last two rows, each once) the arguments are within the window's
+/// spread or a closed form applies. The S values are scaled by a power of 4 before they are
+/// combined, so that products of subnormal arguments keep their precision.
+template <class T, bool WithRf>
+APSE_FUNC APSE_COLD RfRj<T> rj_wide(T x, T y, T z, T p) noexcept {
+    if constexpr (sizeof(T) == sizeof(float)) {
+        const RfRj<double> r = rj_core<double, WithRf>(double(x), double(y), double(z), double(p));
+        return {T(r.rf), T(r.rj)};
+    } else {
+        x = std::fabs(x), y = std::fabs(y), z = std::fabs(z);  // -0 -> +0: R_C(-0, .) would be NaN
+        RfRj<T> r{T(0), T(0)};
+        if constexpr (WithRf) r.rf = rf_core(x, y, z);
+        T a0 = min_of(min_of(x, y), z), a1 = median_of(x, y, z), a2 = max_of(max_of(x, y), z);
+        T add = T(0);  // R_J(x, y, z, p) = add + R_J(a0, a1, a2, p)
+        for (int iteration = 0; iteration < 3; ++iteration) {
+            const T lo = a0 > T(0) ? a0 : a1;
+            if (p > T(0x1p16) * a2) {
+                if (rj_spread_ok(lo, a2)) {
+                    r.rj = add + rj_reduce_p<T, false>(a0, a1, a2, p).rj;
+                    return r;
+                }
+            } else if (rj_spread_ok(min_of(lo, p), max_of(a2, p))) {
+                r.rj = add + rj_window<T, false>(a0, a1, a2, p, max_of(a2, p), min_of(lo, p)).rj;
+                return r;
+            }
+            // The nonzero values in increasing order, p at position ip; split after position
+            // `split` (S = v[0..split] and the zero, L = the rest), the largest ratio.
+            const int n = a0 > T(0) ? 4 : 3;
+            const T as[3] = {a0, a1, a2};
+            const T* a = a0 > T(0) ? as : as + 1;
+            const int ip = int(p > a[0]) + int(p > a[1]) + (n == 4 ? int(p > a[2]) : 0);
+            T v[4];
+            for (int i = 0, j = 0; i < n; ++i) v[i] = i == ip ? p : a[j++];
+            int split = 0, gap = -1;
+            for (int i = 0; i + 1 < n; ++i) {
+                const int g = std::ilogb(v[i + 1]) - std::ilogb(v[i]);
+                if (g > gap) gap = g, split = i;
+            }
+            const int large = n - 1 - split;  // the size of L
+            const bool p_large = ip > split;
+            // S's values scaled by 4^m (exact) so that the largest is in [1, 4)
+            const int m = -(std::ilogb(v[split]) / 2);
+            const T s0 = std::ldexp(a0, 2 * m), s1 = std::ldexp(a1, 2 * m), sp = std::ldexp(p, 2 * m);
+            if (large == 1 && !p_large) {  // L = {a2}, S = {a0, a1, p}
+                const T ra0 = std::sqrt(s0), ra1 = std::sqrt(s1), rp = std::sqrt(sp);
+                const T aa = sp + ra0 * ra1, bb = rp * (ra0 + ra1);  // 4^m a, 4^m b
+                T rc, den;  // R_C(aa^2, bb^2) = rc / den
+                if (bb <= aa) {
+                    // R_C(1, u^2) = log(2/u) (1 + O(u^2 log u)) for small u
+                    const T u = bb / aa;
+                    rc = u < T(0x1p-30) ? std::log(T(2) / u) : rc_core(T(1), u * u);
+                    den = aa;
+                } else {
+                    const T u = aa / bb;  // u^2 may underflow: R_C(0, 1) = pi/2 to within u
+                    rc = rc_core(u * u, T(1));
+                    den = bb;
+                }
+                r.rj = add + std::ldexp(quotient_scaled(T(3) * rc, den, std::sqrt(a2)), 2 * m);
+                return r;
+            }
+            if (large == 1) {  // L = {p}, S = {a0, a1, a2}
+                r.rj = add + T(3) * rf_core(a0, a1, a2) / p;
+                return r;
+            }
+            if (large == 2 && !p_large) {  // L = {a1, a2}, S = {a0, p}: R_C(v) = 2^m R_C(4^m v)
+                r.rj = add + std::ldexp(quotient_scaled(T(3) * rc_core(s0, sp), std::sqrt(a1), std::sqrt(a2)), m);
+                return r;
+            }
+            if (large == 2) {  // L = {a2, p}, S = {a0, a1}: sqrt(4^m c) = (sqrt(s0) + sqrt(s1)) / 2
+                const T sa2 = std::sqrt(a2), sc = T(0.5) * (std::sqrt(s0) + std::sqrt(s1));
+                const T rc_c = (log_ratio(sa2, sc) + T(m + 1) * ln2_v<T>) / sa2;
+                r.rj = add + T(3) * (rc_c - rc_core(a2, p)) / p;  // p - c = p (c < 2^-196 p)
+                return r;
+            }
+            if (p_large) {  // L = {a1, a2, p}, S = {a0}
+                a0 = T(0);
+                continue;
+            }
+            // L = {a0, a1, a2}, S = {p}
+            const int j = std::ilogb(a0) - std::ilogb(p) - 100;
+            add += quotient_scaled(T(1.5) * T(j) * ln2_v<T>, std::sqrt(a0),
+                                   std::sqrt(a1), std::sqrt(a2));
+            p = std::ldexp(p, j);
+        }
+        r.rj = quiet_nan<T>();  // not reached: at most two reductions
+        return r;
+    }
+}
+
+/// R_J (and optionally R_F) outside the kernels' window: rescaled (rj_window), or rj_wide.
+template <class T, bool WithRf>
+APSE_FUNC APSE_COLD RfRj<T> rj_outside_window(T x, T y, T z, T p) noexcept {
+    const T mx = max_of(max_of(x, y), max_of(z, p)), mn = min_of(min_nonzero_of(x, y, z), p);
+    if (rj_spread_ok(mn, mx)) return rj_window<T, WithRf>(x, y, z, p, mx, mn);
+    return rj_wide<T, WithRf>(x, y, z, p);
+}
+
+/// R_J (and optionally R_F) for valid finite arguments whose largest one is in the kernels'
+/// window (RjWindow): the AGM when one of x, y, z is zero (complete integral; 2-3x faster;
+/// accurate for any smaller nonzero argument), else duplication, if the smallest argument is in
+/// the window too (always when InWindow), else rj_outside_window.
+template <class T, bool WithRf, bool InWindow>
+APSE_FUNC RfRj<T> rj_dispatch(T x, T y, T z, T p) noexcept {
+    // (Three call sites: with one, on pairs chosen by selects, g++ lays out the duplication
+    // path 13% slower; in device code cel_rj is not inlined, so the copies cost nothing.)
+    if (x == T(0) && cel_suits(y, z, p)) return cel_rj<T, WithRf>(y, z, p);
+    if (y == T(0) && cel_suits(x, z, p)) return cel_rj<T, WithRf>(x, z, p);
+    if (z == T(0) && cel_suits(x, y, p)) return cel_rj<T, WithRf>(x, y, p);
+    if constexpr (!InWindow) {
+        if (!(min_of(min_of(x, y), min_of(z, p)) >= rj_window_lo<T>()))
+            return rj_outside_window<T, WithRf>(x, y, z, p);
+    }
+    return rj_core_unscaled<T, WithRf>(x, y, z, p);
+}
+
+/// R_J (and optionally R_F) for valid finite arguments: the kernels in their window (the
+/// common case), rj_reduce_p when p exceeds x, y, z by far, else rescaled or rj_wide.
+template <class T, bool WithRf>
+APSE_FUNC RfRj<T> rj_core(T x, T y, T z, T p) noexcept {
+    const T top = max_of(max_of(x, y), z);
+    if (!(p > T(0x1p16) * top)) {
+        const T mx = max_of(top, p);
+        if (mx <= rj_window_hi<T>() && mx >= rj_window_lo<T>()) return rj_dispatch<T, WithRf>(x, y, z, p);
+        return rj_outside_window<T, WithRf>(x, y, z, p);
+    }
+    if (!rj_spread_ok(min_nonzero_of(x, y, z), top)) return rj_wide<T, WithRf>(x, y, z, p);
+    return rj_reduce_p<T, WithRf>(x, y, z, p);
 }
 
 /// R_D(x, y, z) for valid finite arguments (z > 0, at most one of x, y zero):
@@ -463,8 +696,17 @@ template <class T> APSE_FUNC APSE_NOINLINE T rd_core(T x, T y, T z) noexcept {
     // The sum, or q below (<= the sum / tolerance, up to ~37x), would overflow:
     // R_D(v/64) = 512 R_D(v).
     if (!is_finite((x + y + T(3) * z) * (T(1) / rj_tolerance<T>()))) {
+        // R_D(v/64) = 512 R_D(v), unless a small argument would lose bits in the subnormals (a
+        // fuzz finding, R_D(1.7e38, 1e-45, 1e-45) in float: NaN): then R_D = R_J(x, y, z, z),
+        // whose scaling handles any spread
+        if (!(min_of(x, y) * T(0.015625) >= (sizeof(T) == sizeof(float) ? T(0x1p-126) : T(0x1p-1022))))
+            return rj_core(x, y, z, z).rj;
         x *= T(0.015625), y *= T(0.015625), z *= T(0.015625);
         scale = T(1) / T(512);
+    } else if (x + y + T(3) * z < tiny_sum<T>()) {  // 1/mean would overflow: R_D(v) = 8^k R_D(4^k v)
+        x = std::ldexp(x, 2 * tiny_scale<T>()), y = std::ldexp(y, 2 * tiny_scale<T>()), z = std::ldexp(z, 2 * tiny_scale<T>());
+        const T r = rd_core(x, y, z);
+        return std::ldexp(r, 3 * tiny_scale<T>());
     }
     const T a0 = (x + y + T(3) * z) * T(0.2);
     const T dx = a0 - x, dy = a0 - y;
