@@ -150,7 +150,12 @@ TEMPLATE_TEST_CASE("disk light: the stateless pdf is every sampler's own density
     // For every map, plain and cosine-weighted, at random lights and shading points:
     // * disk_light_pdf(o, c, n, r, map, table[, n_r], w) == DiskLight(...).pdf(w) bit for bit, for
     //   sampled directions and for random directions (hits and misses): a renderer's stateless MIS
-    //   query and its light object agree exactly;
+    //   query and its light object agree exactly — where the compiler cannot contract a·b + c
+    //   into an FMA (__FP_FAST_FMA undefined). With contraction (-march=x86-64-v3
+    //   -ffp-contract=fast, AArch64) one source inlined at two call sites may round differently:
+    //   then they agree to the tolerance below (measured: only the cosine-weighted parallel map,
+    //   whose Newton inversion differs by ~1e-6 float, differs at all), a flip across a tabulated
+    //   bin edge or the rim being allowed in < 1 % of the directions;
     // * at a sampled direction it equals the pdf sample() reported: exactly for the exact maps (1/Omega
     //   both ways); for the maps that recompute a density from the direction (tabulated, cosine)
     //   to rounding — relative 1e-3 float / 1e-9 double: the tabulated density is recomputed from the
@@ -166,7 +171,12 @@ TEMPLATE_TEST_CASE("disk light: the stateless pdf is every sampler's own density
     const double eps = double(apse::epsilon<T>());
     const apse::TabulationView table = apse::default_table().view();
     apse_test::Rng rng(sizeof(T) == 4 ? 31 : 32);
-    int checked = 0, edge = 0, hits = 0, misses = 0, exact_checked = 0;
+    int checked = 0, edge = 0, hits = 0, misses = 0, exact_checked = 0, flips = 0;
+#if defined(__FP_FAST_FMA) || defined(__FP_FAST_FMAF)
+    const bool may_contract = true;
+#else
+    const bool may_contract = false;
+#endif
     for (int scene = 0; scene < 60; ++scene) {
         const Scene<T> sc = random_scene<T>(rng);
         for (apse::DiskMap m : kAllMaps)
@@ -178,6 +188,18 @@ TEMPLATE_TEST_CASE("disk light: the stateless pdf is every sampler's own density
                     return cosine ? apse::disk_light_pdf(sc.o, sc.c, sc.n, sc.r, m, table, sc.rn, w)
                                   : apse::disk_light_pdf(sc.o, sc.c, sc.n, sc.r, m, table, w);
                 };
+                const auto agree = [&](T p, T q) {  // stateless p, light q
+                    if (!may_contract || p == q) {
+                        CHECK(p == q);
+                        return;
+                    }
+                    const double rel = p > T(0) && q > T(0) ? std::fabs(double(p) / double(q) - 1) : 1.0;
+                    INFO("stateless " << p << " light " << q);
+                    if (rel > tol) {
+                        ++flips;
+                        CHECK((rel < 0.02 || !(p > T(0)) || !(q > T(0))));
+                    }
+                };
                 const glm::dvec3 od(sc.o), cd(sc.c), nd = glm::normalize(glm::dvec3(sc.n));
                 const double height = std::fabs(glm::dot(od - cd, nd));
                 const double tol_hit = 64 * eps * (1 + glm::length(cd - od) / height);
@@ -186,11 +208,11 @@ TEMPLATE_TEST_CASE("disk light: the stateless pdf is every sampler's own density
                     const auto s = light.sample(u);
                     if (!(s.pdf > T(0))) continue;  // light below the receiver's horizon
                     const T p = stateless(s.direction);
-                    CHECK(p == light.pdf(s.direction));
+                    agree(p, light.pdf(s.direction));
                     const double rel = std::fabs(double(p) / double(s.pdf) - 1);
                     INFO("pdf " << p << " sampled " << s.pdf << " relative difference " << rel);
                     if (!cosine && !apse::is_tabulated(m)) {
-                        CHECK(p == s.pdf);
+                        agree(p, s.pdf);
                         ++exact_checked;
                     } else if (rel > tol) {
                         ++edge;
@@ -213,15 +235,16 @@ TEMPLATE_TEST_CASE("disk light: the stateless pdf is every sampler's own density
                                             : Vec3<T>(rng.uniform<T>() - T(0.5), rng.uniform<T>() - T(0.5),
                                                       rng.uniform<T>() - T(0.5));
                     const T p = stateless(w);
-                    CHECK(p == light.pdf(w));
+                    agree(p, light.pdf(w));
                     (p > T(0) ? hits : misses) += 1;
                 }
             }
     }
     std::printf("[%s] stateless pdf: %d sampled directions (%d exact maps), %d near a tabulated bin edge; "
-                "%d random directions hit, %d missed\n", sizeof(T) == 4 ? "float" : "double", checked, exact_checked,
-                edge, hits, misses);
+                "%d random directions hit, %d missed; FMA contraction %s, %d flips\n", sizeof(T) == 4 ? "float" : "double",
+                checked, exact_checked, edge, hits, misses, may_contract ? "possible" : "impossible", flips);
     CHECK(edge * 100 < checked);
+    CHECK(flips * 100 < checked + hits + misses);
     CHECK(hits > 1000);    // both branches of the query are exercised
     CHECK(misses > 1000);
 }

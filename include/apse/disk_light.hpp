@@ -138,7 +138,7 @@ public:
     /// density: 1/Omega, the tabulated map's or the cosine-weighted one). pdf 0 ("no sample",
     /// finite direction and point = o) for a degenerate light, a NaN u, when rounding leaves the
     /// ray parallel to the disk's plane, or when the hit point overflows T.
-    APSE_FUNC DiskLightSample<T> sample(const vec2& u) const noexcept {
+    APSE_NOINLINE APSE_FUNC DiskLightSample<T> sample(const vec2& u) const noexcept {
         const DirectionSample<T> s = visit([&u](const auto& m) { return m.sample(u); });
         DiskLightSample<T> r{s.direction, o_, T(0), T(0)};
         if (!(s.pdf > T(0))) return r;
@@ -155,14 +155,15 @@ public:
     /// Density of sample() at the world-space direction `w` (any non-zero length), in solid
     /// angle: the sampler's density (1/Omega, the tabulated or the cosine-weighted one) if the
     /// ray from o along w hits the disk (boundary included), else 0. The same value as
-    /// disk_light_pdf with the same arguments.
-    APSE_FUNC T pdf(const vec3& w) const noexcept {
+    /// disk_light_pdf with the same arguments (the same computation; where the compiler contracts
+    /// a·b + c into FMAs, the two call sites may round differently).
+    APSE_NOINLINE APSE_FUNC T pdf(const vec3& w) const noexcept {
         return visit([&w](const auto& m) { return m.pdf(w); });
     }
 
     /// The point of the unit square whose sample has direction `w` (the map's inverse; see
     /// the maps' invert for the behaviour outside the disk).
-    APSE_FUNC vec2 invert(const vec3& w) const noexcept {
+    APSE_NOINLINE APSE_FUNC vec2 invert(const vec3& w) const noexcept {
         return visit([&w](const auto& m) { return m.invert(w); });
     }
 
@@ -192,12 +193,12 @@ private:
         APSE_FUNC Maps(CosineTag, const TabulatedMap<T>& m, const vec3& n) noexcept : cw_tab(m, n) {}
     };
     static APSE_FUNC TabulationView no_table() noexcept { return TabulationView{nullptr, 0, 0, 0}; }
-    static APSE_FUNC Maps make_maps(DiskMap map, const SphericalEllipse<T>& e, const TabulationView& table) noexcept {
+    static APSE_NOINLINE APSE_FUNC Maps make_maps(DiskMap map, const SphericalEllipse<T>& e, const TabulationView& table) noexcept {
         if (map == DiskMap::parallel) return Maps(ParallelMap<T>(e));
         if (is_tabulated(map)) return Maps(TabulatedLdRadialMap<T>(e, table));
         return Maps(LdRadialMap<T>(e));
     }
-    static APSE_FUNC Maps make_cosine(DiskMap map, const SphericalEllipse<T>& e, const TabulationView& table,
+    static APSE_NOINLINE APSE_FUNC Maps make_cosine(DiskMap map, const SphericalEllipse<T>& e, const TabulationView& table,
                                       const vec3& n) noexcept {
         switch (map) {
         case DiskMap::radial: return Maps(CosineTag{}, RadialMap<T>(e), n);
@@ -208,7 +209,9 @@ private:
         }
     }
 
-    /// f(the live sampler): every sampler has sample, pdf, invert and ellipse.
+    /// f(the live sampler): every sampler has sample, pdf, invert and ellipse. (sample, pdf,
+    /// invert and the set-up are APSE_NOINLINE: in device code each holds every sampler's code
+    /// once per kernel, however many calls the kernel makes.)
     template <class F> APSE_FUNC decltype(auto) visit(F&& f) const noexcept {
         if (cosine_) {
             switch (map_) {
