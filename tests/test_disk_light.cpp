@@ -293,6 +293,14 @@ TEMPLATE_TEST_CASE("disk light: tabulated maps need a valid table", "[disk_light
         CHECK(ok.sample(Vec2<T>(T(0.4), T(0.6))).pdf > T(0));
         CHECK(ok.pdf(w) > T(0));
         CHECK(ok.solid_angle() == apse::detail::solid_angle_of(ok.ellipse()));
+        // invert(sample(u)) = u (tolerance as test_tabulated's round trip: 2e-3 float, 1e-8
+        // double, the conditioning of the azimuth of a direction rounded to T; u away from the
+        // seams and the centre)
+        for (const Vec2<T> u : {Vec2<T>(T(0.3), T(0.8)), Vec2<T>(T(0.7), T(0.2)), Vec2<T>(T(0.15), T(0.35))}) {
+            const Vec2<T> back = ok.invert(ok.sample(u).direction);
+            CHECK(std::fabs(double(back.x - u.x)) <= (sizeof(T) == 4 ? 2e-3 : 1e-8));
+            CHECK(std::fabs(double(back.y - u.y)) <= (sizeof(T) == 4 ? 2e-3 : 1e-8));
+        }
         const auto s1 = apse::sample_disk_light(o, c, n, T(1), m, apse::default_table().view(), Vec2<T>(T(0.3), T(0.8)));
         const auto s2 = ok.sample(Vec2<T>(T(0.3), T(0.8)));
         CHECK(s1.direction == s2.direction);
