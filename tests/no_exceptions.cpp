@@ -94,6 +94,7 @@ static bool tabulated_ok() {
     using V = glm::vec<3, T>;
     static apse::TabulationTable table;  // 77 KB: static storage
     table.build();
+    const apse::TabulationTable& shared = apse::default_table();  // the built default table
     const glm::vec<2, T> u(T(0.3), T(0.6));
     const auto e = apse::project_disk(V(0), V(T(0.5), T(0), T(-1)), V(0, 0, 1), T(1));
     const apse::TabulatedMap<T> tab(e, table.view());
@@ -112,11 +113,22 @@ static bool tabulated_ok() {
     const apse::DiskLight<T> lit(V(0), V(T(0.5), T(0), T(-1)), V(0, 0, 1), T(1), apse::DiskMap::ld_radial,
                                  V(T(0.3), T(0.1), T(-1)));
     const auto ls = lit.sample(u);
-    const T more[] = {c.pdf, cw.pdf(c.direction), cw.invert(c.direction).x, ls.pdf, lit.pdf(ls.direction)};
+    // DiskLight with a tabulated map and the stateless pdfs
+    const apse::DiskLight<T> tl(V(0), V(T(0.5), T(0), T(-1)), V(0, 0, 1), 1.0, apse::DiskMap::tabulated_ld_radial,
+                                shared.view());
+    const auto ts = tl.sample(u);
+    const T more[] = {c.pdf, cw.pdf(c.direction), cw.invert(c.direction).x, ls.pdf, lit.pdf(ls.direction), ts.pdf,
+                      tl.pdf(ts.direction),
+                      apse::disk_light_pdf(V(0), V(T(0.5), T(0), T(-1)), V(0, 0, 1), 1, apse::DiskMap::tabulated,
+                                           shared.view(), ts.direction),
+                      apse::disk_light_pdf(V(0), V(T(0.5), T(0), T(-1)), V(0, 0, 1), 1, apse::DiskMap::tabulated,
+                                           shared.view(), V(T(0.3), T(0.1), T(-1)), ts.direction),
+                      apse::sample_disk_light(V(0), V(T(0.5), T(0), T(-1)), V(0, 0, 1), T(1), apse::DiskMap::tabulated,
+                                              shared.view(), u).pdf};
     for (T v : more)
         if (!apse::is_finite(v) || !(v >= T(0))) return false;
     return s.pdf > T(0) && !tab.empty() && !tld.empty() && c.pdf > T(0) && cw.weighted() && !cw.empty() &&
-           lit.cosine_weighted();
+           lit.cosine_weighted() && ts.pdf > T(0) && apse::is_tabulated(tl.map());
 }
 
 int main() {

@@ -1,6 +1,9 @@
 // disk_light.hpp: the one-call disk-light sampler — directions, points on the disk, distances and
-// pdfs, against an independent quadrature of the disk's solid angle; MIS pdf; bad input.
+// pdfs, against an independent quadrature of the disk's solid angle; MIS pdf (the stateless
+// disk_light_pdf equals every sampler's own density: exact, tabulated, cosine-weighted); mixed
+// scalar arguments; bad input.
 #include <apse/disk_light.hpp>
+#include <apse/baselines/area.hpp>
 
 #include "support/map_testing.hpp"
 
@@ -14,6 +17,8 @@ namespace {
 template <class T> using Vec2 = glm::vec<2, T>;
 template <class T> using Vec3 = glm::vec<3, T>;
 const apse::DiskMap kMaps[] = {apse::DiskMap::radial, apse::DiskMap::ld_radial, apse::DiskMap::parallel};
+const apse::DiskMap kAllMaps[] = {apse::DiskMap::radial, apse::DiskMap::ld_radial, apse::DiskMap::parallel,
+                                  apse::DiskMap::tabulated, apse::DiskMap::tabulated_ld_radial};
 // Passed to GPU kernels by value: plain data. It holds only the chosen map (a union).
 static_assert(std::is_trivially_copyable<apse::DiskLight<float>>::value, "DiskLight must be trivially copyable");
 static_assert(std::is_trivially_copyable<apse::DiskLight<double>>::value, "DiskLight must be trivially copyable");
@@ -116,4 +121,232 @@ TEMPLATE_TEST_CASE("disk light: degenerate and bad input", "[disk_light][robust]
         CHECK(sb.pdf > T(0));
         CHECK(std::fabs(double(sb.point.z) + 1) <= 1e-5);
     }
+}
+
+namespace {
+/// A random disk light and shading point: centre in [-2, 2]^3, a random non-unit normal,
+/// radius log-uniform in [0.05, 3], o in [-3, 3]^3 (either side of the disk), and a random
+/// receiver normal (half of them facing the disk's centre).
+template <class T> struct Scene {
+    Vec3<T> o, c, n, rn;
+    T r;
+};
+template <class T> Scene<T> random_scene(apse_test::Rng& rng) {
+    auto u = [&](double a, double b) { return T(a + (b - a) * rng.uniform<double>()); };
+    Scene<T> s;
+    s.c = Vec3<T>(u(-2, 2), u(-2, 2), u(-2, 2));
+    s.n = Vec3<T>(u(-1, 1), u(-1, 1), u(-1, 1));
+    s.r = T(0.05 * std::pow(60.0, rng.uniform<double>()));
+    s.o = Vec3<T>(u(-3, 3), u(-3, 3), u(-3, 3));
+    s.rn = Vec3<T>(u(-1, 1), u(-1, 1), u(-1, 1));
+    if (rng.uniform<double>() < 0.5 && glm::dot(s.rn, s.c - s.o) < T(0)) s.rn = -s.rn;
+    return s;
+}
+}  // namespace
+
+TEMPLATE_TEST_CASE("disk light: the stateless pdf is every sampler's own density (MIS)", "[disk_light][mis]", float,
+                   double) {
+    using T = TestType;
+    // For every map, plain and cosine-weighted, at random lights and shading points:
+    // * disk_light_pdf(o, c, n, r, map, table[, n_r], w) == DiskLight(...).pdf(w) bit for bit, for
+    //   sampled directions and for random directions (hits and misses): a renderer's stateless MIS
+    //   query and its light object agree exactly — where the compiler cannot contract a·b + c
+    //   into an FMA (__FP_FAST_FMA undefined). With contraction (-march=x86-64-v3
+    //   -ffp-contract=fast, AArch64) one source inlined at two call sites may round differently:
+    //   then they agree to the tolerance below (measured: only the cosine-weighted parallel map,
+    //   whose Newton inversion differs by ~1e-6 float, differs at all), a flip across a tabulated
+    //   bin edge or the rim being allowed in < 1 % of the directions;
+    // * at a sampled direction it equals the pdf sample() reported: exactly for the exact maps (1/Omega
+    //   both ways); for the maps that recompute a density from the direction (tabulated, cosine)
+    //   to rounding — relative 1e-3 float / 1e-9 double: the tabulated density is recomputed from the
+    //   direction's azimuth through atan2 and the cosine warp from the map's inverse, whose float
+    //   error grows for small lights (a direction rounded to float is ~1e-5 of a 0.01-rad ellipse,
+    //   times the warp's slope: measured worst 1.5e-4 float), except within a few ulps of a tabulated bin edge,
+    //   where the recomputed azimuth may fall into the neighbouring bin (densities of adjacent bins
+    //   differ by < 1 %: allowed 2 %, and such samples must stay rare, < 1 %);
+    // * the point is on the disk, along the direction, at the distance (as the exact maps' test).
+    // So the balance-heuristic weights p_l/(p_l + p_b) of the light sample and p_b/(p_l + p_b) of a
+    // BSDF sample use one density and sum to 1.
+    const double tol = sizeof(T) == 4 ? 1e-3 : 1e-9;
+    const double eps = double(apse::epsilon<T>());
+    const apse::TabulationView table = apse::default_table().view();
+    apse_test::Rng rng(sizeof(T) == 4 ? 31 : 32);
+    int checked = 0, edge = 0, hits = 0, misses = 0, exact_checked = 0, flips = 0;
+#if defined(__FP_FAST_FMA) || defined(__FP_FAST_FMAF)
+    const bool may_contract = true;
+#else
+    const bool may_contract = false;
+#endif
+    for (int scene = 0; scene < 60; ++scene) {
+        const Scene<T> sc = random_scene<T>(rng);
+        for (apse::DiskMap m : kAllMaps)
+            for (int cosine = 0; cosine < 2; ++cosine) {
+                INFO("scene " << scene << " map " << int(m) << " cosine " << cosine);
+                const apse::DiskLight<T> light = cosine ? apse::DiskLight<T>(sc.o, sc.c, sc.n, sc.r, m, table, sc.rn)
+                                                        : apse::DiskLight<T>(sc.o, sc.c, sc.n, sc.r, m, table);
+                const auto stateless = [&](const Vec3<T>& w) {
+                    return cosine ? apse::disk_light_pdf(sc.o, sc.c, sc.n, sc.r, m, table, sc.rn, w)
+                                  : apse::disk_light_pdf(sc.o, sc.c, sc.n, sc.r, m, table, w);
+                };
+                const auto agree = [&](T p, T q) {  // stateless p, light q
+                    if (!may_contract || p == q) {
+                        CHECK(p == q);
+                        return;
+                    }
+                    const double rel = p > T(0) && q > T(0) ? std::fabs(double(p) / double(q) - 1) : 1.0;
+                    INFO("stateless " << p << " light " << q);
+                    if (rel > tol) {
+                        ++flips;
+                        CHECK((rel < 0.02 || !(p > T(0)) || !(q > T(0))));
+                    }
+                };
+                const glm::dvec3 od(sc.o), cd(sc.c), nd = glm::normalize(glm::dvec3(sc.n));
+                const double height = std::fabs(glm::dot(od - cd, nd));
+                const double tol_hit = 64 * eps * (1 + glm::length(cd - od) / height);
+                for (int i = 0; i < 40; ++i) {
+                    const Vec2<T> u(rng.uniform<T>(), rng.uniform<T>());
+                    const auto s = light.sample(u);
+                    if (!(s.pdf > T(0))) continue;  // light below the receiver's horizon
+                    const T p = stateless(s.direction);
+                    agree(p, light.pdf(s.direction));
+                    const double rel = std::fabs(double(p) / double(s.pdf) - 1);
+                    INFO("pdf " << p << " sampled " << s.pdf << " relative difference " << rel);
+                    if (!cosine && !apse::is_tabulated(m)) {
+                        agree(p, s.pdf);
+                        ++exact_checked;
+                    } else if (rel > tol) {
+                        ++edge;
+                        CHECK(apse::is_tabulated(m));  // only the tabulated bins have edges
+                        CHECK(rel < 0.02);
+                    }
+                    ++checked;
+                    const glm::dvec3 pt(s.point);
+                    CHECK(std::fabs(glm::dot(pt - cd, nd)) <= tol_hit * (1 + glm::length(cd)));
+                    CHECK(glm::length(pt - cd) <= double(sc.r) * (1 + tol_hit));
+                    CHECK(glm::length(pt - (od + double(s.distance) * glm::dvec3(s.direction))) <=
+                          tol_hit * (1 + glm::length(pt)));
+                }
+                // random directions: towards random points of the disk's plane around it (hits and
+                // misses near the rim) and uniform on the sphere (mostly misses)
+                const Vec3<T> e1 = Vec3<T>(apse::detail::any_perpendicular(nd)), e2 = Vec3<T>(glm::cross(nd, glm::dvec3(e1)));
+                for (int i = 0; i < 40; ++i) {
+                    const T a = T(6.283185307179586) * rng.uniform<T>(), rho = T(1.3) * sc.r * std::sqrt(rng.uniform<T>());
+                    const Vec3<T> w = i % 2 ? sc.c + rho * (std::cos(a) * e1 + std::sin(a) * e2) - sc.o
+                                            : Vec3<T>(rng.uniform<T>() - T(0.5), rng.uniform<T>() - T(0.5),
+                                                      rng.uniform<T>() - T(0.5));
+                    const T p = stateless(w);
+                    agree(p, light.pdf(w));
+                    (p > T(0) ? hits : misses) += 1;
+                }
+            }
+    }
+    std::printf("[%s] stateless pdf: %d sampled directions (%d exact maps), %d near a tabulated bin edge; "
+                "%d random directions hit, %d missed; FMA contraction %s, %d flips\n", sizeof(T) == 4 ? "float" : "double",
+                checked, exact_checked, edge, hits, misses, may_contract ? "possible" : "impossible", flips);
+    CHECK(edge * 100 < checked);
+    CHECK(flips * 100 < checked + hits + misses);
+    CHECK(hits > 1000);    // both branches of the query are exercised
+    CHECK(misses > 1000);
+}
+
+TEMPLATE_TEST_CASE("disk light: the exact maps' pdf is not the tabulated density", "[disk_light][mis]", float, double) {
+    using T = TestType;
+    // Why the tabulated maps need their own stateless query: the exact maps' disk_light_pdf
+    // (1/Omega) differs from the tabulated density by up to the table's error (0.44 % for the
+    // default table, docs/tabulated.md), far above rounding, for a close, large light (a unit
+    // disk seen from 0.03 above its plane, 0.9 from its centre: alpha ~ 1.50).
+    const Vec3<T> o(0), c(T(0.9), T(0), T(-0.03)), n(0, 0, 1);
+    const apse::TabulationView table = apse::default_table().view();
+    const apse::DiskLight<T> light(o, c, n, T(1), apse::DiskMap::tabulated_ld_radial, table);
+    double worst = 0;
+    for (int i = 0; i < 32; ++i)
+        for (int j = 0; j < 32; ++j) {
+            const auto s = light.sample(Vec2<T>(T((i + 0.5) / 32), T((j + 0.5) / 32)));
+            REQUIRE(s.pdf > T(0));
+            worst = std::max(worst, std::fabs(double(apse::disk_light_pdf(o, c, n, T(1), s.direction)) / double(s.pdf) - 1));
+        }
+    // 1e-3: a thousand times float's rounding of either pdf (measured: 1.7e-3 in double at 64 x 64 points)
+    std::printf("[%s] max |1/Omega / tabulated pdf − 1| = %.3g\n", sizeof(T) == 4 ? "float" : "double", worst);
+    CHECK(worst > 1e-3);
+    CHECK(worst < 0.0044 + 1e-4);  // the default table's documented bound (+ float rounding)
+}
+
+TEMPLATE_TEST_CASE("disk light: tabulated maps need a valid table", "[disk_light][robust]", float, double) {
+    using T = TestType;
+    const Vec3<T> o(0), c(T(0.3), T(0), T(-1)), n(0, 0, 1), w(T(0.3), T(0), T(-1));
+    const apse::TabulationView none{nullptr, 0, 0, 0};
+    for (apse::DiskMap m : {apse::DiskMap::tabulated, apse::DiskMap::tabulated_ld_radial}) {
+        // no table (the constructors without one) or an invalid view: the empty light
+        const apse::DiskLight<T> lights[] = {apse::DiskLight<T>(o, c, n, T(1), m),
+                                             apse::DiskLight<T>(o, c, n, T(1), m, none),
+                                             apse::DiskLight<T>(o, c, n, T(1), m, Vec3<T>(0, 0, -1))};
+        for (const auto& light : lights) {
+            CHECK(light.sample(Vec2<T>(T(0.4), T(0.6))).pdf == T(0));
+            CHECK(light.pdf(w) == T(0));
+            CHECK(light.map() == m);
+        }
+        CHECK(apse::disk_light_pdf(o, c, n, T(1), m, none, w) == T(0));
+        CHECK(apse::disk_light_pdf(o, c, n, T(1), m, none, Vec3<T>(0, 0, -1), w) == T(0));
+        CHECK(apse::sample_disk_light(o, c, n, T(1), m, none, Vec2<T>(T(0.4), T(0.6))).pdf == T(0));
+        // with the table: a sample, and the solid angle is the ellipse's
+        const apse::DiskLight<T> ok(o, c, n, T(1), m, apse::default_table().view());
+        CHECK(ok.sample(Vec2<T>(T(0.4), T(0.6))).pdf > T(0));
+        CHECK(ok.pdf(w) > T(0));
+        CHECK(ok.solid_angle() == apse::detail::solid_angle_of(ok.ellipse()));
+        // invert(sample(u)) = u (tolerance as test_tabulated's round trip: 2e-3 float, 1e-8
+        // double, the conditioning of the azimuth of a direction rounded to T; u away from the
+        // seams and the centre)
+        for (const Vec2<T> u : {Vec2<T>(T(0.3), T(0.8)), Vec2<T>(T(0.7), T(0.2)), Vec2<T>(T(0.15), T(0.35))}) {
+            const Vec2<T> back = ok.invert(ok.sample(u).direction);
+            CHECK(std::fabs(double(back.x - u.x)) <= (sizeof(T) == 4 ? 2e-3 : 1e-8));
+            CHECK(std::fabs(double(back.y - u.y)) <= (sizeof(T) == 4 ? 2e-3 : 1e-8));
+        }
+        const auto s1 = apse::sample_disk_light(o, c, n, T(1), m, apse::default_table().view(), Vec2<T>(T(0.3), T(0.8)));
+        const auto s2 = ok.sample(Vec2<T>(T(0.3), T(0.8)));
+        CHECK(s1.direction == s2.direction);
+        CHECK(s1.pdf == s2.pdf);
+        const auto s3 = apse::sample_disk_light(o, c, n, T(1), m, apse::default_table().view(), Vec3<T>(0, 0, -1),
+                                                Vec2<T>(T(0.3), T(0.8)));
+        const apse::DiskLight<T> lit(o, c, n, T(1), m, apse::default_table().view(), Vec3<T>(0, 0, -1));
+        CHECK(lit.cosine_weighted());
+        CHECK(s3.pdf == lit.sample(Vec2<T>(T(0.3), T(0.8))).pdf);
+    }
+}
+
+TEST_CASE("disk light: mixed scalar arguments (float vectors, double or int radius)", "[disk_light][api]") {
+    // T comes from the vectors; the radius converts to it. Each call must compile, be the float
+    // overload and give exactly the float call's result.
+    const glm::vec3 o(0.1f, 0.2f, 0.0f), c(0.3f, 0.0f, -1.0f), n(0.0f, 0.2f, 1.0f), w(0.3f, -0.1f, -1.0f);
+    const glm::vec2 u(0.3f, 0.7f);
+    const auto e_f = apse::project_disk(o, c, n, 1.5f);
+    const auto e_d = apse::project_disk(o, c, n, 1.5);
+    const auto e_i = apse::project_disk(o, c, n, 2);
+    static_assert(std::is_same<decltype(e_d), const apse::SphericalEllipse<float>>::value, "float result");
+    static_assert(std::is_same<decltype(e_i), const apse::SphericalEllipse<float>>::value, "float result");
+    CHECK(e_d.tan_alpha == e_f.tan_alpha);
+    CHECK(e_d.z == e_f.z);
+    CHECK(e_i.tan_beta == apse::project_disk(o, c, n, 2.0f).tan_beta);
+    CHECK(apse::project_sphere(o, c, 0.5).tan_alpha == apse::project_sphere(o, c, 0.5f).tan_alpha);
+    const apse::TabulationView table = apse::default_table().view();
+    for (apse::DiskMap m : kAllMaps) {
+        CHECK(apse::sample_disk_light(o, c, n, 1.5, m, table, u).pdf == apse::sample_disk_light(o, c, n, 1.5f, m, table, u).pdf);
+        CHECK(apse::disk_light_pdf(o, c, n, 1.5, m, table, w) == apse::disk_light_pdf(o, c, n, 1.5f, m, table, w));
+        CHECK(apse::disk_light_pdf(o, c, n, 1.5, m, table, n, w) == apse::disk_light_pdf(o, c, n, 1.5f, m, table, n, w));
+    }
+    CHECK(apse::sample_disk_light(o, c, n, 1, apse::DiskMap::parallel, u).pdf ==
+          apse::sample_disk_light(o, c, n, 1.0f, apse::DiskMap::parallel, u).pdf);
+    CHECK(apse::disk_light_pdf(o, c, n, 1.5, w) == apse::disk_light_pdf(o, c, n, 1.5f, w));
+    // class template argument deduction: the radius does not take part either
+    const apse::DiskLight light(o, c, n, 1.5);
+    const apse::DiskAreaSampler area(o, c, n, 1.5);
+    static_assert(std::is_same<decltype(light), const apse::DiskLight<float>>::value, "float light");
+    static_assert(std::is_same<decltype(area), const apse::DiskAreaSampler<float>>::value, "float sampler");
+    CHECK(light.pdf(w) == apse::disk_light_pdf(o, c, n, 1.5f, w));
+    CHECK(area.pdf(w) == apse::DiskAreaSampler<float>(o, apse::DiskFrame<float>::make(c, n, 1.5f)).pdf(w));
+    CHECK(apse::DiskFrame<float>::make(c, n, 2).radius == 2.0f);
+    // double vectors with a float radius: the double overload
+    const glm::dvec3 od(o), cd(c), nd(n);
+    static_assert(std::is_same<decltype(apse::project_disk(od, cd, nd, 1.5f)), apse::SphericalEllipse<double>>::value,
+                  "double result");
+    CHECK(apse::project_disk(od, cd, nd, 1.5f).tan_alpha == apse::project_disk(od, cd, nd, 1.5).tan_alpha);
 }

@@ -31,6 +31,7 @@
 #include "detail/glm.hpp"
 #include "detail/pairs.hpp"
 #include "detail/symmetric_eigen.hpp"
+#include "detail/type_identity.hpp"
 #include "detail/vector.hpp"
 #include "math.hpp"
 #include "spherical_ellipse.hpp"
@@ -130,10 +131,12 @@ APSE_FUNC bool disk_faces(const glm::vec<3, T>& o, const glm::vec<3, T>& center,
 /// Empty (Omega = 0) for: o in the disk's plane (including o on the disk or its rim: the
 /// emitter's own surface), radius <= 0, zero or non-finite normal, NaN/Inf anywhere, lights with
 /// tan(beta) below detail::tan_min<T>(). Measure: solid angle (two-sided, the disk's projected
-/// area on the unit sphere). Accuracy: see the file comment.
+/// area on the unit sphere). Accuracy: see the file comment. T is deduced from the vectors
+/// alone: the radius may be any arithmetic type (converted to T), e.g. float vectors with a
+/// double or int radius.
 template <class T>
 APSE_FUNC SphericalEllipse<T> project_disk(const glm::vec<3, T>& o, const glm::vec<3, T>& center,
-                                           const glm::vec<3, T>& normal, T radius) noexcept {
+                                           const glm::vec<3, T>& normal, detail::type_identity_t<T> radius) noexcept {
     using vec3 = glm::vec<3, T>;  ///< a 3-D vector (direction, point or normal)
     using E = SphericalEllipse<T>;
     const vec3 w0 = center - o;
@@ -342,10 +345,11 @@ APSE_FUNC SphericalEllipse<T> project_ellipse(const glm::vec<3, T>& o, const glm
 /// Empty for o inside or on the sphere (documented choice: a point inside sees the emitter in
 /// every direction, which is not a spherical ellipse), radius <= 0, NaN/Inf anywhere.
 /// Accuracy: tan alpha to a few ulps, except near the surface where D − R inherits the rounding
-/// of center − o (relative error ~ eps D/(D − R)).
+/// of center − o (relative error ~ eps D/(D − R)). T is deduced from the vectors alone (the
+/// radius converts to it, as in project_disk).
 template <class T>
 APSE_FUNC SphericalEllipse<T> project_sphere(const glm::vec<3, T>& o, const glm::vec<3, T>& center,
-                                             T radius) noexcept {
+                                             detail::type_identity_t<T> radius) noexcept {
     using vec3 = glm::vec<3, T>;  ///< a 3-D vector (direction, point or normal)
     using E = SphericalEllipse<T>;
     const vec3 p0 = center - o;

@@ -158,6 +158,15 @@ __global__ void tabulated_kernel(const T* in, T* out, float* table_rows, int n) 
         apse::SampleDiagnostics diag{0};
         s += apse::sample_with_diagnostics(tld, u, diag).pdf + T(diag.iterations) + tld.pdf(d) + tld.invert(d).y + T(tld.empty() ? 1 : 0) + tld.radial().ellipse().beta();
     }
+    // DiskLight with the tabulated maps, and the stateless pdf of every sampler (radius as double:
+    // it converts to T)
+    const apse::DiskMap m = i % 2 == 0 ? apse::DiskMap::tabulated : apse::DiskMap::tabulated_ld_radial;
+    const V o(0), c(a, T(0), T(-1)), nrm(0, 0, 1), rn(T(0.2), T(0.1), T(-1));
+    const apse::DiskLight<T> light(o, c, nrm, 1.0, m, view);
+    const auto ls = light.sample(u);
+    s += ls.pdf + ls.distance + light.pdf(ls.direction) + light.invert(ls.direction).x + light.solid_angle();
+    s += T(apse::is_tabulated(light.map()) ? 1 : 0) + apse::sample_disk_light(o, c, nrm, 1, m, view, u).pdf;
+    s += apse::disk_light_pdf(o, c, nrm, 1.0, m, view, ls.direction);
     out[i] = s;
 }
 
@@ -203,6 +212,12 @@ __global__ void cosine_kernel(const T* in, T* out, float* table_rows, int n) {
     const apse::DiskLight<T> light(V(0), V(a, T(0), T(-1)), V(0, 0, 1), T(1), m, V(T(1), T(0), T(-0.5)));
     const auto ls = light.sample(u);
     s += ls.pdf + light.pdf(ls.direction) + light.invert(ls.direction).x + T(light.cosine_weighted() ? 1 : 0);
+    // cosine-weighted over a tabulated map, and its stateless pdf
+    const apse::DiskMap mt = i % 2 == 0 ? apse::DiskMap::tabulated : apse::DiskMap::tabulated_ld_radial;
+    const apse::DiskLight<T> lt(V(0), V(a, T(0), T(-1)), V(0, 0, 1), T(1), mt, view, V(T(1), T(0), T(-0.5)));
+    const auto lts = lt.sample(u);
+    s += lts.pdf + apse::disk_light_pdf(V(0), V(a, T(0), T(-1)), V(0, 0, 1), T(1), mt, view, V(T(1), T(0), T(-0.5)), lts.direction);
+    s += apse::sample_disk_light(V(0), V(a, T(0), T(-1)), V(0, 0, 1), T(1), mt, view, V(T(1), T(0), T(-0.5)), u).pdf;
     out[i] = s;
 }
 

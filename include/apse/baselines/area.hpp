@@ -17,6 +17,7 @@
 #include "../config.hpp"
 #include "../detail/concentric.hpp"
 #include "../detail/glm.hpp"
+#include "../detail/type_identity.hpp"
 #include "../detail/vector.hpp"
 #include "../math.hpp"
 #include "../sample.hpp"
@@ -41,7 +42,7 @@ template <class T> struct DiskFrame {
     T inv_radius;  ///< 1/r (0 when invalid)
 
     /// The frame of the disk (center, normal, radius); see the struct comment for invalid input.
-    static APSE_FUNC DiskFrame make(const vec3& center, const vec3& normal, T radius) noexcept {
+    static APSE_FUNC DiskFrame make(const vec3& center, const vec3& normal, detail::type_identity_t<T> radius) noexcept {
         DiskFrame f{center, vec3(T(0), T(0), T(1)), vec3(T(1), T(0), T(0)), vec3(T(0), T(1), T(0)), T(0), T(0)};
         const vec3 nn = detail::robust_normalize(normal);
         const T inv_r = T(1) / radius;
@@ -83,7 +84,8 @@ public:
 
     /// Convenience: builds the frame at every call (DiskFrame::make), then as above — a normalised
     /// normal, a perpendicular and a cross product more per shading point than storing the frame.
-    APSE_FUNC DiskAreaSampler(const vec3& o, const vec3& center, const vec3& normal, T radius) noexcept
+    APSE_FUNC DiskAreaSampler(const vec3& o, const vec3& center, const vec3& normal,
+                              detail::type_identity_t<T> radius) noexcept
         : DiskAreaSampler(o, DiskFrame<T>::make(center, normal, radius)) {}
 
     /// True if the sampler cannot produce samples (degenerate input, see the class comment).

@@ -126,6 +126,9 @@ template <int Bins, int AlphaNodes, int RatioNodes> struct TabulationTableN {
 
     /// Computes every row (double-precision quadrature of the closed-form density; no elliptic
     /// integrals). Cost ~ size × 10 evaluations (~15 ms for the default size). Host or device.
+    /// Deterministic and idempotent: a second call rewrites the same values. Not safe while
+    /// another thread reads or builds the same table (a data race): build it before sharing it,
+    /// or use default_table(), which builds the default table once, thread-safely.
     APSE_FUNC void build() noexcept {
         for (int i = 0; i < AlphaNodes; ++i) {
             const double x = double(i) / double(AlphaNodes - 1), sc = 1.0 - x;  // sqrt(cos alpha)
@@ -145,6 +148,23 @@ template <int Bins, int AlphaNodes, int RatioNodes> struct TabulationTableN {
 /// The default table: 128 bins × 17 × 9 shapes = 19 737 floats = 77 KB; max |pdf Omega − 1| =
 /// 0.44 % over all shapes (docs/tabulated.md; the error is ~0.56/N, set by the bins).
 using TabulationTable = TabulationTableN<128, 17, 9>;
+
+/// The default TabulationTable, built on the first call and shared by every later one: a
+/// reference to a function-local static (77 KB, static storage), so it lives until the program
+/// exits. Thread-safe: C++ runs a function-local static's initialisation exactly once, and
+/// threads calling it meanwhile wait for it (scenes loaded on worker threads may all call it);
+/// the first call takes ~15 ms, later ones a guard check. Host only (not APSE_FUNC): device code
+/// reads a copy in device memory through a TabulationView (`default_table()` copied once, e.g.
+/// with cudaMemcpy). One table per program (an inline function: every translation unit shares
+/// it; a shared library that does not export its symbols may hold its own copy).
+inline const TabulationTable& default_table() noexcept {
+    struct Built {
+        TabulationTable table;
+        Built() noexcept { table.build(); }
+    };
+    static const Built built;
+    return built.table;
+}
 
 /// Tabulated radial map (docs/math.md §4 + §6, unbiased; file comment): u1 picks the quadrant and the
 /// Lambert anomaly from the blended table CDF, u2 the polar angle exactly as RadialMap. Not
