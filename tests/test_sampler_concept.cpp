@@ -151,6 +151,16 @@ struct Rectangle {  // the disk's circumscribed square
     }
 };
 
+template <apse::DiskMap M, bool Cosine> struct Light {  // DiskLight, plain or with the receiver's normal
+    static constexpr const char* name = "DiskLight";
+    static constexpr bool invertible = true, has_solid_angle = true, counts = false;
+    static constexpr Shape shape = Shape::disk;
+    template <class T> static auto make(const Scene<T>& s) {
+        if constexpr (Cosine) return apse::DiskLight<T>(s.o, s.c, s.n, s.r, M, s.receiver);
+        else return apse::DiskLight<T>(s.o, s.c, s.n, s.r, M);
+    }
+};
+
 // --- compile-time checks --------------------------------------------------------------------------
 
 template <class S, class = void> struct has_invert : std::false_type {};
@@ -282,6 +292,12 @@ template <class F, class T> void check_normal() {
             CHECK(diag.iterations <= (F::counts ? apse::detail::max_area_iterations : 0));
             CHECK(apse::is_finite(smp.pdf));
             CHECK(std::fabs(double(glm::length(smp.direction)) - 1) <= Budget<T>::on_light);
+            if constexpr (std::is_base_of<apse::PointSample<T>, decltype(smp)>::value) {
+                // the point on the light: where point_on_plane puts it, at its distance along the direction
+                const apse::PointSample<T> p = apse::point_on_plane(apse::DirectionSample<T>(smp), scene.o, scene.c, scene.n);
+                CHECK(glm::length(glm::dvec3(smp.point) - glm::dvec3(p.point)) <= Budget<T>::on_light);
+                CHECK(std::fabs(double(smp.distance) - double(p.distance)) <= Budget<T>::on_light);
+            }
             if (!(smp.pdf > T(0))) continue;  // rejected (Gamito single shot): no sample
             ++accepted;
             CHECK(on_light(scene, F::shape, smp, Budget<T>::on_light));
@@ -352,6 +368,20 @@ TEMPLATE_TEST_CASE("sampler concept: the baselines", "[concept]", float, double)
     check_sampler<GamitoSingle, TestType>();
     check_sampler<GamitoRetry, TestType>();
     check_sampler<Rectangle, TestType>();
+}
+
+TEMPLATE_TEST_CASE("sampler concept: DiskLight, each map, plain and cosine-weighted", "[concept]", float, double) {
+    using T = TestType;
+    static_assert(std::is_same<decltype(std::declval<const apse::DiskLight<T>&>().sample(std::declval<const V2<T>&>())),
+                               apse::PointSample<T>>::value,
+                  "DiskLight::sample -> PointSample");
+    check_sampler<Light<apse::DiskMap::radial, false>, T>();
+    check_sampler<Light<apse::DiskMap::ld_radial, false>, T>();
+    check_sampler<Light<apse::DiskMap::parallel, false>, T>();
+    check_sampler<Light<apse::DiskMap::radial, true>, T>();
+    check_sampler<Light<apse::DiskMap::ld_radial, true>, T>();
+    check_sampler<Light<apse::DiskMap::parallel, true>, T>();
+    check_degenerate<Light<apse::DiskMap::ld_radial, true>, T>(Degenerate::behind);  // below the receiver's horizon
 }
 
 TEMPLATE_TEST_CASE("sampler concept: point_on_plane completes a direction sample", "[concept]", float, double) {

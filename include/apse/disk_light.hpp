@@ -65,14 +65,9 @@ APSE_FUNC constexpr bool is_tabulated(DiskMap map) noexcept {
     return map == DiskMap::tabulated || map == DiskMap::tabulated_ld_radial;
 }
 
-/// One sample of a disk light.
-template <class T> struct DiskLightSample {
-    glm::vec<3, T> direction;  ///< world-space unit direction from o towards the disk
-    glm::vec<3, T> point;      ///< the point of the disk hit along `direction`
-    T distance;                ///< |point − o|: the shadow ray's length (shorten it by the
-                               ///< renderer's usual epsilon so that it does not hit the light)
-    T pdf;                     ///< density in solid angle of the sampler; 0 marks "no sample"
-};
+/// One sample of a disk light: direction, pdf (solid angle; 0 marks "no sample"), the point of
+/// the disk hit along the direction and its distance (the result family's PointSample).
+template <class T> using DiskLightSample = PointSample<T>;
 
 /// A disk light seen from one shading point, ready to sample with one of the maps (the set-up
 /// — projection, map — is done once in the constructor; sample() as often as needed),
@@ -82,6 +77,8 @@ template <class T> struct DiskLightSample {
 /// (a union: 1248 bytes in double, 656 in float, set by the cosine-weighted tabulated samplers;
 /// the plain maps alone would take 488 and 272).
 template <class T> class DiskLight {
+    static_assert(detail::is_real_type<T>(), "apse: DiskLight<T>: T must be float or double");
+
 public:
     using vec2 = glm::vec<2, T>;  ///< a point of the unit square
     using vec3 = glm::vec<3, T>;  ///< a 3-D vector (direction, point or normal)
@@ -117,6 +114,12 @@ public:
     /// The map used.
     APSE_FUNC DiskMap map() const noexcept { return map_; }
 
+    /// True if the light cannot be sampled (degenerate input, o in the disk's plane; cosine-weighted:
+    /// also the disk entirely below the receiver's horizon): every sample and pdf is then 0.
+    APSE_FUNC bool empty() const noexcept {
+        return visit([](const auto& m) { return m.empty(); });
+    }
+
     /// True if the samples are cosine-weighted (built with a valid receiver normal).
     APSE_FUNC bool cosine_weighted() const noexcept { return cosine_; }
 
@@ -140,16 +143,7 @@ public:
     /// ray parallel to the disk's plane, or when the hit point overflows T.
     APSE_NOINLINE APSE_FUNC DiskLightSample<T> sample(const vec2& u) const noexcept {
         const DirectionSample<T> s = visit([&u](const auto& m) { return m.sample(u); });
-        DiskLightSample<T> r{s.direction, o_, T(0), T(0)};
-        if (!(s.pdf > T(0))) return r;
-        const T t = glm::dot(center_ - o_, normal_) / glm::dot(s.direction, normal_);
-        if (!(t > T(0)) || !is_finite(t)) return r;
-        const vec3 p = o_ + t * s.direction;
-        if (!is_finite(p.x + p.y + p.z)) return r;  // beyond T's range
-        r.point = p;
-        r.distance = t;
-        r.pdf = s.pdf;
-        return r;
+        return point_on_plane(s, o_, center_, normal_);
     }
 
     /// Density of sample() at the world-space direction `w` (any non-zero length), in solid
