@@ -3,6 +3,7 @@
 // disk_light_pdf equals every sampler's own density: exact, tabulated, cosine-weighted); mixed
 // scalar arguments; bad input.
 #include <apse/disk_light.hpp>
+#include <apse/projection.hpp>
 #include <apse/baselines/area.hpp>
 
 #include "support/map_testing.hpp"

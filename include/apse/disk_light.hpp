@@ -34,7 +34,7 @@
 
 #include "config.hpp"
 #include "math.hpp"
-#include "projection.hpp"
+#include "projection_disk.hpp"
 #include "sample.hpp"
 #include "spherical_ellipse.hpp"
 #include "detail/glm.hpp"

@@ -22,7 +22,7 @@
 #include "../detail/glm.hpp"
 #include "../detail/vector.hpp"
 #include "../math.hpp"
-#include "../projection.hpp"
+#include "../projection_disk.hpp"
 #include "../sample.hpp"
 #include "../spherical_rectangle.hpp"
 
