@@ -109,11 +109,16 @@ static bool tabulated_ok() {
     const apse::DiskLight<T> lit(V(0), V(T(0.5), T(0), T(-1)), V(0, 0, 1), T(1), apse::DiskMap::ld_radial,
                                  V(T(0.3), T(0.1), T(-1)));
     const auto ls = lit.sample(u);
-    const T more[] = {c.pdf, cw.pdf(c.direction), cw.invert(c.direction).x, ls.pdf, lit.pdf(ls.direction)};
+    // the projected-solid-angle sampler on its own
+    const apse::ProjectedSolidAngleSampler<T> psa(e, V(T(0.3), T(0.1), T(-1)));
+    const auto p = psa.sample(u);
+    const T more[] = {c.pdf, cw.pdf(c.direction), cw.invert(c.direction).x, ls.pdf, lit.pdf(ls.direction),
+                      p.pdf, psa.pdf(p.direction), psa.invert(p.direction).y, psa.ellipse().tan_alpha,
+                      apse::ProjectedSolidAngleSampler<T>().pdf(p.direction)};
     for (T v : more)
         if (!apse::is_finite(v) || !(v >= T(0))) return false;
     return s.pdf > T(0) && !tab.empty() && !tld.empty() && c.pdf > T(0) && cw.weighted() && !cw.empty() &&
-           lit.cosine_weighted();
+           lit.cosine_weighted() && p.pdf > T(0) && !psa.empty();
 }
 
 int main() {

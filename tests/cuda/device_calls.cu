@@ -192,6 +192,11 @@ __global__ void cosine_kernel(const T* in, T* out, float* table_rows, int n) {
     const apse::DiskLight<T> light(V(0), V(a, T(0), T(-1)), V(0, 0, 1), T(1), m, V(T(1), T(0), T(-0.5)));
     const auto ls = light.sample(u);
     s += ls.pdf + light.pdf(ls.direction) + light.invert(ls.direction).x + T(light.cosine_weighted() ? 1 : 0);
+    // the projected-solid-angle sampler on its own (and its default, empty state)
+    const apse::ProjectedSolidAngleSampler<T> psa(e, V(T(0.2), T(0.1), T(-1)));
+    const auto p = psa.sample(u);
+    s += p.pdf + psa.pdf(p.direction) + psa.invert(p.direction).y + T(psa.empty() ? 1 : 0) + psa.ellipse().tan_beta +
+         apse::ProjectedSolidAngleSampler<T>().pdf(p.direction);
     out[i] = s;
 }
 
