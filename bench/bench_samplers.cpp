@@ -152,7 +152,7 @@ constexpr char cosine_ld_radial[] = "cosine_ld_radial";
 constexpr char cosine_parallel[] = "cosine_parallel";
 constexpr char cosine_tabulated[] = "cosine_tabulated";
 constexpr char cosine_tabulated_ld_radial[] = "cosine_tabulated_ld_radial";
-constexpr char cosine_tabulated_ld_radial_8[] = "cosine_tabulated_ld_radial_8_nodes";
+constexpr char cosine_tabulated_ld_radial_16[] = "cosine_tabulated_ld_radial_16_nodes";
 constexpr char cosine_tabulated_ld_radial_32[] = "cosine_tabulated_ld_radial_32_nodes";
 
 /// True if S has the iteration-counting overload sample(u, int& iterations).
@@ -260,7 +260,7 @@ int main(int argc, char** argv) {
     register_sampler<Cosine<Parallel, cosine_parallel>>();
     register_sampler<Cosine<Tabulated, cosine_tabulated>>();
     register_sampler<Cosine<TabulatedLdRadial, cosine_tabulated_ld_radial>>();
-    register_sampler<Cosine<TabulatedLdRadial, cosine_tabulated_ld_radial_8, 8>>();
+    register_sampler<Cosine<TabulatedLdRadial, cosine_tabulated_ld_radial_16, 16>>();
     register_sampler<Cosine<TabulatedLdRadial, cosine_tabulated_ld_radial_32, 32>>();
     benchmark::RunSpecifiedBenchmarks();
     benchmark::Shutdown();
