@@ -423,10 +423,10 @@ TEST_CASE("cosine-weighted: stratification kept (jittered beats independent)", "
     // points. With the exact conditional along each azimuth, f/pdf depends on the azimuth alone
     // (the marginal's ratio to its piecewise-linear fit, which varies at the scale of the 8 nodes),
     // so the 16 × 16 jittered points stratify it in 16 columns only: a gain of at most ~16 for a
-    // function varying at that scale (measured in the INFO messages: 10–15 for the LD-radial
-    // composition); a sampler that broke stratification would leave a ratio near 1, hence > 6.
-    // And jittered cosine-weighted points must beat jittered points of the plain map (the
-    // variance the weighting removes; measured 27–…×).
+    // function varying at that scale (measured: 14.7–23.6 here, 5.7 for the radial layout); a
+    // sampler that broke stratification would leave a ratio near 1, hence > 8. And jittered
+    // cosine-weighted points must beat jittered points of the plain map (the variance the
+    // weighting removes; measured 27–528×).
     for (const Config& c : {kConfigs[0], kConfigs[1], kConfigs[4]}) {
         const glm::dvec3 n = glm::normalize(c.normal);
         auto f = [&](const glm::dvec3& w) { return std::max(glm::dot(n, w), 0.0); };
@@ -438,7 +438,7 @@ TEST_CASE("cosine-weighted: stratification kept (jittered beats independent)", "
         auto sample_plain = [&](double u1, double u2) { return plain.sample(glm::dvec2(u1, u2)); };
         const double vp = apse_test::estimator_variance<double>(sample_plain, f, 16, 400, true, 11);
         INFO(c.name << ": variance independent / jittered = " << vi / vj << ", plain jittered / jittered = " << vp / vj);
-        CHECK(vi / vj > 6.0);
+        CHECK(vi / vj > 8.0);
         CHECK(vp / vj > 10.0);
     }
 }
