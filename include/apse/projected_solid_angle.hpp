@@ -44,10 +44,13 @@
 namespace apse {
 namespace detail {
 
-/// E(x) = x − sin x cos x for x in [0, pi/2] with s = sin x, c = cos x: the Taylor series of
-/// (y − sin y)/2, y = 2x, below x = 1/2 (the difference cancels there; the series' first
-/// omitted term is below 1e-17 relative), the difference above (it loses at most a factor 6 there).
-template <class T> APSE_FUNC T angle_minus_sin_cos(T x, T s, T c) noexcept {
+/// E(x) k^2, E(x) = x − sin x cos x for x in [0, pi/2] with s = sin x, c = cos x, and a scale
+/// k (1/sqrt(tan alpha tan beta), so that masses ~ theta^2 neither underflow nor overflow in float
+/// for the tiniest and the thinnest ellipses): the
+/// Taylor series of (y − sin y)/2, y = 2x, below x = 1/2 (the difference cancels there; the
+/// series' first omitted term is below 1e-17 relative), the difference above (it loses at most a
+/// factor 6 there).
+template <class T> APSE_FUNC T angle_minus_sin_cos(T x, T s, T c, T k) noexcept {
     if (x < T(0.5)) {
         const T y2 = T(4) * x * x;
         T p = T(1) - y2 * T(1.0 / 342.0);
@@ -58,34 +61,38 @@ template <class T> APSE_FUNC T angle_minus_sin_cos(T x, T s, T c) noexcept {
         p = T(1) - y2 * T(1.0 / 72.0) * p;
         p = T(1) - y2 * T(1.0 / 42.0) * p;
         p = T(1) - y2 * T(1.0 / 20.0) * p;
-        return T(2.0 / 3.0) * x * x * x * p;  // (2x)^3 / 12 (1 − ...)
+        const T xk = x * k;
+        return T(2.0 / 3.0) * xk * xk * x * p;  // (2x)^3 / 12 (1 − ...) k^2
     }
-    return x - s * c;
+    return (x - s * c) * k * k;
 }
 
 /// The part of one azimuth above the horizon, as the conditional density sin d (a cos d + b sin d)
 /// of d = theta − theta_0 in [0, end] (file comment).
 template <class T> struct PsaRay {
     T a, b;              ///< the conditional density's coefficients (a >= 0)
-    T k;                 ///< > 0: the cosine is k sin d (theta_0 is the horizon); 0: a cos d + b sin d
+    T kc;                ///< > 0: the cosine is kc sin d (theta_0 is the horizon); 0: a cos d + b sin d
     T sin0, cos0;        ///< sin, cos of theta_0
     T sin_end, cos_end;  ///< sin, cos of the range's end
     T end;               ///< the range's end, radians (psa_finish)
-    T mass;              ///< F(end) = ∫ c dω per unit azimuth (psa_finish); 0 if the whole azimuth is below
+    T mass;              ///< F(end) k^2, F(end) = ∫ c dω per unit azimuth (psa_finish); 0 if all below
+    T k;                 ///< the scale of every F (k^2): 1/sqrt(tan alpha tan beta)
     bool valid;          ///< false: the whole azimuth is below the horizon
     bool at_rim;         ///< the range is [0, theta_max]: the centre to the rim
 };
 
-/// F(d) = (a sin^2 d + b (d − sin d cos d))/2.
+/// F(d) k^2, F(d) = (a sin^2 d + b (d − sin d cos d))/2.
 template <class T> APSE_FUNC T psa_cdf(const PsaRay<T>& r, T d, T s, T c) noexcept {
-    return T(0.5) * (r.a * s * s + r.b * angle_minus_sin_cos(d, s, c));
+    const T sk = s * r.k;
+    return T(0.5) * (r.a * sk * sk + r.b * angle_minus_sin_cos(d, s, c, r.k));
 }
 
 /// The ray of the unit horizontal direction (cp, sp) whose rim is at polar angle theta_max
 /// (sin st, cos ct), for the unit normal n (ellipse frame): the range above the horizon and its
-/// conditional density (end and mass: psa_finish).
-template <class T> APSE_FUNC PsaRay<T> psa_ray(T cp, T sp, T st, T ct, const glm::vec<3, T>& n) noexcept {
+/// conditional density (end and mass: psa_finish); k: the scale of F (PsaRay::k).
+template <class T> APSE_FUNC PsaRay<T> psa_ray(T cp, T sp, T st, T ct, const glm::vec<3, T>& n, T k) noexcept {
     PsaRay<T> r{};
+    r.k = k;
     const T s = n.x * cp + n.y * sp;
     const T cm = n.z * ct + s * st;  // the cosine at the rim
     r.cos0 = T(1);
@@ -98,28 +105,29 @@ template <class T> APSE_FUNC PsaRay<T> psa_ray(T cp, T sp, T st, T ct, const glm
             r.cos_end = ct;
             r.at_rim = true;
         } else {  // the horizon cuts the azimuth at tan theta = n_z / (−s)
-            const T k = hypot2(n.z, s);
-            r.sin_end = n.z / k;
-            r.cos_end = -s / k;
+            const T h = hypot2(n.z, s);
+            r.sin_end = n.z / h;
+            r.cos_end = -s / h;
         }
     } else if (s > T(0) && cm > T(0)) {
-        const T k = hypot2(n.z, s);
+        const T h = hypot2(n.z, s);
         r.a = -n.z;
-        r.k = k;
-        r.sin0 = -n.z / k;
-        r.cos0 = s / k;
-        r.sin_end = cm / k;  // sin(theta_max − theta_0)
-        r.cos_end = (ct * s - st * n.z) / k;
+        r.kc = h;
+        r.sin0 = -n.z / h;
+        r.cos0 = s / h;
+        r.sin_end = cm / h;  // sin(theta_max − theta_0)
+        r.cos_end = (ct * s - st * n.z) / h;
     } else {
         r.valid = false;  // the whole azimuth is below the horizon
     }
     return r;
 }
 
-/// The end angle and mass of a valid ray, given E(end) = end − sin end cos end.
+/// The end angle and mass of a valid ray, given E(end) k^2 (angle_minus_sin_cos).
 template <class T> APSE_FUNC void psa_finish(PsaRay<T>& r, T end, T e) noexcept {
     r.end = end;
-    r.mass = T(0.5) * (r.a * r.sin_end * r.sin_end + r.b * e);
+    const T sk = r.sin_end * r.k;
+    r.mass = T(0.5) * (r.a * sk * sk + r.b * e);
 }
 
 /// sin and cos of the rim's polar angle theta_max at the unit horizontal direction (cp, sp):
@@ -188,6 +196,7 @@ public:
         const T ca2 = e.cos_alpha * e.cos_alpha, cb2 = e.cos_beta * e.cos_beta;
         const T lx = n_.x * e.sin_alpha * e.cos_beta, ly = n_.y * e.sin_beta * e.cos_alpha;
         if (!(n_.z > T(0)) && lx * lx + ly * ly <= n_.z * n_.z * ca2 * cb2) return;
+        k_ = T(1) / std::sqrt(e.tan_alpha * e.tan_beta);  // >= 2^-55; the product is a normal number
         inv_a2_ = T(1) / (e.tan_alpha * e.tan_alpha);
         inv_b2_ = T(1) / (e.tan_beta * e.tan_beta);
         // the Lambert ratio sin(beta/2)/sin(alpha/2) (kept above sqrt(eps): any q > 0 is exact)
@@ -246,7 +255,7 @@ public:
         // A x^2 + B x^3 = target that matches F at d = 0 (to second order: F''(0) = a) and at
         // the end (A = a end^2/2, B = F(end) − A; two Newton steps from sqrt(u2))
         const T target = uc.y * r.mass;
-        const T ma = T(0.5) * r.a * r.end * r.end, mb = r.mass - ma;
+        const T ek = r.end * r.k, ma = T(0.5) * r.a * ek * ek, mb = r.mass - ma;
         T x = std::sqrt(uc.y);
         for (int i = 0; i < 2; ++i) {
             const T slope = x * (T(2) * ma + T(3) * mb * x);
@@ -260,15 +269,16 @@ public:
             sd = v.s;
             cd = v.c;
             value = detail::psa_cdf(r, d, sd, cd) - target;
-            const T f1 = sd * (r.a * cd + r.b * sd), f2 = r.a * (cd - sd) * (cd + sd) + T(2) * r.b * sd * cd;
+            const T f1 = sd * r.k * (r.a * cd + r.b * sd) * r.k;
+            const T f2 = (r.a * (cd - sd) * (cd + sd) + T(2) * r.b * sd * cd) * r.k * r.k;
             derivative = f1 > T(0) ? f1 - value * f2 / (T(2) * f1) : f1;
         };
         find_root_bracketed(eval, T(0), r.end, x * r.end, T(2) * epsilon<T>() * r.mass, 60);
         // sd, cd: the last point evaluated, which find_root_bracketed returns
         const T st = sd * r.cos0 + cd * r.sin0, ct = cd * r.cos0 - sd * r.sin0;
-        const T c = r.k > T(0) ? r.k * sd : r.a * cd + r.b * sd;
+        const T c = r.kc > T(0) ? r.kc * sd : r.a * cd + r.b * sd;
         const vec3 l(st * a.cp, st * a.sp, ct);
-        const T pdf = c > T(0) ? m * inv_total_ / (width_ * a.jacobian) * c / r.mass : T(0);
+        const T pdf = c > T(0) ? m * inv_total_ / (width_ * a.jacobian) * (c / r.mass * r.k) * r.k : T(0);
         return {e_.to_world(l), pdf};
     }
 
@@ -283,7 +293,7 @@ public:
         const Azimuth a = azimuth_of(l.x, l.y);
         const detail::PsaRay<T> r = ray(a);
         if (!r.valid || !(r.mass > T(0))) return T(0);
-        return marginal(a.x) * inv_total_ / (width_ * a.jacobian) * c / r.mass;
+        return marginal(a.x) * inv_total_ / (width_ * a.jacobian) * (c / r.mass * r.k) * r.k;
     }
 
     /// The point of the unit square whose sample has direction `d`: u1 the azimuth's CDF, u2
@@ -329,10 +339,10 @@ private:
     APSE_FUNC detail::PsaRay<T> ray(const Azimuth& a) const noexcept {
         T st, ct;
         detail::psa_rim(a.cp, a.sp, inv_a2_, inv_b2_, st, ct);
-        detail::PsaRay<T> r = detail::psa_ray(a.cp, a.sp, st, ct, n_);
+        detail::PsaRay<T> r = detail::psa_ray(a.cp, a.sp, st, ct, n_, k_);
         if (r.valid) {
             const T end = detail::angle_of(r.sin_end, r.cos_end);
-            detail::psa_finish(r, end, detail::angle_minus_sin_cos(end, r.sin_end, r.cos_end));
+            detail::psa_finish(r, end, detail::angle_minus_sin_cos(end, r.sin_end, r.cos_end, k_));
         }
         return r;
     }
@@ -346,7 +356,7 @@ private:
             detail::psa_finish(r, T(0), rim_e);
         } else {
             const T end = detail::angle_approx(r.sin_end, r.cos_end);
-            detail::psa_finish(r, end, detail::angle_minus_sin_cos(end, r.sin_end, r.cos_end));
+            detail::psa_finish(r, end, detail::angle_minus_sin_cos(end, r.sin_end, r.cos_end, r.k));
         }
         return r.mass;
     }
@@ -421,8 +431,9 @@ private:
             } else {
                 detail::psa_rim(cp[j], sp[j], inv_a2_, inv_b2_, st[j], ct[j]);
             }
-            e[j] = detail::angle_minus_sin_cos(detail::angle_approx(st[j], ct[j]), st[j], ct[j]);
-            wa[j] = T(0.5) * jac[j] * st[j] * st[j];  // the node value is n_z wa + s wb when the
+            e[j] = detail::angle_minus_sin_cos(detail::angle_approx(st[j], ct[j]), st[j], ct[j], k_);
+            const T sk = st[j] * k_;
+            wa[j] = T(0.5) * jac[j] * sk * sk;  // the node value is n_z wa + s wb when the
             wb[j] = T(0.5) * jac[j] * e[j];            // whole ray is above the horizon
         }
         for (int qd = 0; qd < 4; ++qd)
@@ -432,7 +443,7 @@ private:
                 const T sn = n_.x * hx + n_.y * hy;
                 z[qd * m + i] = n_.z * ct[j] + sn * st[j] >= T(0)
                                     ? n_.z * wa[j] + sn * wb[j]
-                                    : jac[j] * node_mass(detail::psa_ray(hx, hy, st[j], ct[j], n_), e[j]);
+                                    : jac[j] * node_mass(detail::psa_ray(hx, hy, st[j], ct[j], n_, k_), e[j]);
             }
         z[Nodes] = z[0];
     }
@@ -463,7 +474,7 @@ private:
             const Azimuth az = azimuth_at(T(k) / T(Nodes));
             T st, ct;
             detail::psa_rim(az.cp, az.sp, inv_a2_, inv_b2_, st, ct);
-            z[k] = w * az.jacobian * node_mass(detail::psa_ray(az.cp, az.sp, st, ct, n_), T(0));
+            z[k] = w * az.jacobian * node_mass(detail::psa_ray(az.cp, az.sp, st, ct, n_, k_), T(0));
         }
         return true;
     }
@@ -472,6 +483,7 @@ private:
     vec3 n_{};                ///< the unit normal in the ellipse's frame
     T inv_a2_{}, inv_b2_{};   ///< 1/tan^2 alpha, 1/tan^2 beta
     T q_{};                   ///< the azimuth parameter's stretch along the minor axis
+    T k_{};                   ///< the scale of every F (PsaRay::k)
     T t0_{}, width_{};        ///< the arc of azimuths sampled: [t0, t0 + width] (turns, mod 1)
     T node_[Nodes + 1]{};     ///< the marginal at the nodes (> 0)
     T cdf_[Nodes + 1]{};      ///< its integral from 0 to node k (over x in [0, 1])
