@@ -605,3 +605,47 @@ TEMPLATE_TEST_CASE("projected-solid-angle sampler: empty cases and outside direc
     CHECK(inside_below > 0);
     STATIC_REQUIRE(std::is_trivially_copyable<apse::ProjectedSolidAngleSampler<T>>::value);
 }
+
+TEMPLATE_TEST_CASE("projected-solid-angle sampler: random ellipses and normals, finite results", "[cosine]", float, double) {
+    // Tangents from 1e-20 to beyond the cap and down to 1e-10 of each other, normals of every
+    // direction (a fifth perpendicular to the axis, a tenth within 1e-6 of it, some tiny): every
+    // sample, pdf and inverse is finite, every sample with pdf > 0 lies above the horizon (to the
+    // rounding of the direction), and samples declined (pdf 0) at interior points of the square
+    // are rare (measured: 16 of 430 000 in float, 4 of 490 000 in double, all on ellipses thinner
+    // than 5e9 : 1 whose centre is below the horizon).
+    using T = TestType;
+    using V3 = glm::vec<3, T>;
+    apse_test::Rng rng(2026);
+    int samplers = 0, declined = 0, interior = 0;
+    for (int i = 0; i < 20000; ++i) {
+        double ta = std::pow(10.0, -20 + 40 * rng.uniform<double>());
+        const double tb = ta * std::pow(10.0, -10 * rng.uniform<double>());
+        if (rng.uniform<double>() < 0.05) ta = 1e30;
+        const auto e = apse::SphericalEllipse<T>::from_tangents(V3(1, 0, 0), V3(0, 1, 0), V3(0, 0, 1), T(ta), T(tb));
+        V3 n(T(rng.uniform<double>() * 2 - 1), T(rng.uniform<double>() * 2 - 1), T(rng.uniform<double>() * 2 - 1));
+        if (rng.uniform<double>() < 0.2) n.z = T(0);
+        if (rng.uniform<double>() < 0.1) n.z = T((rng.uniform<double>() - 0.5) * 1e-6);
+        if (rng.uniform<double>() < 0.05) n *= T(1e-30);
+        const apse::ProjectedSolidAngleSampler<T> s(e, n);
+        if (s.empty()) continue;
+        ++samplers;
+        const glm::dvec3 nd = glm::normalize(glm::dvec3(n));
+        for (int k = 0; k < 4; ++k) {
+            glm::vec<2, T> u(rng.uniform<T>(), rng.uniform<T>());
+            if (k == 3) u = glm::vec<2, T>(T(rng.uniform<double>() < 0.5 ? 0 : 1), T(rng.uniform<double>() < 0.5 ? 0 : 1));
+            const auto d = s.sample(u);
+            const double w = double(d.direction.x) + double(d.direction.y) + double(d.direction.z);
+            REQUIRE(std::isfinite(double(d.pdf)));
+            REQUIRE(std::isfinite(w));
+            REQUIRE(d.pdf >= T(0));
+            if (d.pdf > T(0)) REQUIRE(glm::dot(nd, glm::dvec3(d.direction)) > -1e-6);  // float's rounding of ω
+            if (k < 3) ++interior, declined += d.pdf > T(0) ? 0 : 1;
+            REQUIRE(std::isfinite(double(s.pdf(d.direction))));
+            const glm::vec<2, T> b = s.invert(d.direction);
+            REQUIRE(std::isfinite(double(b.x) + double(b.y)));
+        }
+    }
+    INFO(samplers << " samplers, " << declined << " of " << interior << " interior samples declined");
+    CHECK(samplers > 10000);
+    CHECK(declined * 1000 < interior);  // < 0.1 % (measured ~3e-5)
+}
