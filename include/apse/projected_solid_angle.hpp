@@ -196,11 +196,14 @@ public:
         const T ca2 = e.cos_alpha * e.cos_alpha, cb2 = e.cos_beta * e.cos_beta;
         const T lx = n_.x * e.sin_alpha * e.cos_beta, ly = n_.y * e.sin_beta * e.cos_alpha;
         if (!(n_.z > T(0)) && lx * lx + ly * ly <= n_.z * n_.z * ca2 * cb2) return;
-        k_ = T(1) / std::sqrt(e.tan_alpha * e.tan_beta);  // >= 2^-55; the product is a normal number
-        inv_a2_ = T(1) / (e.tan_alpha * e.tan_alpha);
-        inv_b2_ = T(1) / (e.tan_beta * e.tan_beta);
-        // the Lambert ratio sin(beta/2)/sin(alpha/2) (kept above sqrt(eps): any q > 0 is exact)
-        q_ = max_of(std::sqrt(e.one_minus_cos_beta / e.one_minus_cos_alpha), std::sqrt(epsilon<T>()));
+        // every product after the divisions: tan^2 beta and tan alpha tan beta may be subnormal
+        const T ia = T(1) / e.tan_alpha, ib = T(1) / e.tan_beta;
+        inv_a2_ = ia * ia;
+        inv_b2_ = ib * ib;
+        k_ = std::sqrt(ia * ib);  // 1/sqrt(tan alpha tan beta)
+        // the Lambert ratio sin(beta/2)/sin(alpha/2) = (sin beta/sin alpha) sqrt((1 + cos alpha)/(1 + cos beta))
+        // (no product of small numbers; kept above sqrt(eps): any q > 0 is exact)
+        q_ = max_of(e.sin_beta / e.sin_alpha * std::sqrt((T(1) + e.cos_alpha) / (T(1) + e.cos_beta)), std::sqrt(epsilon<T>()));
         T z[Nodes + 1];
         if (n_.z > T(0)) {
             full_nodes(z);
