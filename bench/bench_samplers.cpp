@@ -138,13 +138,13 @@ struct TabulatedLdRadial {
 // Cosine-weighted samplers: the receiver's normal is the config's half_y (the in-plane direction
 // from o's foot point towards the disk's centre; unit): the centre is never below the horizon,
 // and nearby disks straddle it.
-// Cols × Rows = 0 × 0: the default grid.
-template <class Plain, const char* Name, int Cols = 0, int Rows = 0> struct Cosine {
+// Nodes = 0: the default.
+template <class Plain, const char* Name, int Nodes = 0> struct Cosine {
     static constexpr const char* name = Name;
     template <class T> static auto make(const DiskConfig<T>& d, const apse::TabulationView& v) {
         using Map = decltype(Plain::make(d, v));
-        if constexpr (Cols == 0) return apse::CosineWeighted<Map>(Plain::make(d, v), d.half_y);
-        else return apse::CosineWeighted<Map, Cols, Rows>(Plain::make(d, v), d.half_y);
+        if constexpr (Nodes == 0) return apse::CosineWeighted<Map>(Plain::make(d, v), d.half_y);
+        else return apse::CosineWeighted<Map, Nodes>(Plain::make(d, v), d.half_y);
     }
 };
 constexpr char cosine_radial[] = "cosine_radial";
@@ -152,7 +152,8 @@ constexpr char cosine_ld_radial[] = "cosine_ld_radial";
 constexpr char cosine_parallel[] = "cosine_parallel";
 constexpr char cosine_tabulated[] = "cosine_tabulated";
 constexpr char cosine_tabulated_ld_radial[] = "cosine_tabulated_ld_radial";
-constexpr char cosine_tabulated_ld_radial_8x2[] = "cosine_tabulated_ld_radial_8x2";
+constexpr char cosine_tabulated_ld_radial_16[] = "cosine_tabulated_ld_radial_16_nodes";
+constexpr char cosine_tabulated_ld_radial_32[] = "cosine_tabulated_ld_radial_32_nodes";
 
 /// The set-up alone for one fresh shading point per benchmark iteration, every field of the
 /// result kept observable (cost breakdown).
@@ -245,7 +246,8 @@ int main(int argc, char** argv) {
     register_sampler<Cosine<Parallel, cosine_parallel>>();
     register_sampler<Cosine<Tabulated, cosine_tabulated>>();
     register_sampler<Cosine<TabulatedLdRadial, cosine_tabulated_ld_radial>>();
-    register_sampler<Cosine<TabulatedLdRadial, cosine_tabulated_ld_radial_8x2, 8, 2>>();
+    register_sampler<Cosine<TabulatedLdRadial, cosine_tabulated_ld_radial_16, 16>>();
+    register_sampler<Cosine<TabulatedLdRadial, cosine_tabulated_ld_radial_32, 32>>();
     benchmark::RunSpecifiedBenchmarks();
     benchmark::Shutdown();
     return 0;

@@ -117,6 +117,9 @@ static bool tabulated_ok() {
     const apse::DiskLight<T> tl(V(0), V(T(0.5), T(0), T(-1)), V(0, 0, 1), 1.0, apse::DiskMap::tabulated_ld_radial,
                                 shared.view());
     const auto ts = tl.sample(u);
+    // the projected-solid-angle sampler on its own
+    const apse::ProjectedSolidAngleSampler<T> psa(e, V(T(0.3), T(0.1), T(-1)));
+    const auto p = psa.sample(u);
     const T more[] = {c.pdf, cw.pdf(c.direction), cw.invert(c.direction).x, ls.pdf, lit.pdf(ls.direction), ts.pdf,
                       tl.pdf(ts.direction),
                       apse::disk_light_pdf(V(0), V(T(0.5), T(0), T(-1)), V(0, 0, 1), 1, apse::DiskMap::tabulated,
@@ -124,11 +127,13 @@ static bool tabulated_ok() {
                       apse::disk_light_pdf(V(0), V(T(0.5), T(0), T(-1)), V(0, 0, 1), 1, apse::DiskMap::tabulated,
                                            shared.view(), V(T(0.3), T(0.1), T(-1)), ts.direction),
                       apse::sample_disk_light(V(0), V(T(0.5), T(0), T(-1)), V(0, 0, 1), T(1), apse::DiskMap::tabulated,
-                                              shared.view(), u).pdf};
+                                              shared.view(), u).pdf,
+                      p.pdf, psa.pdf(p.direction), psa.invert(p.direction).y, psa.ellipse().tan_alpha,
+                      apse::ProjectedSolidAngleSampler<T>().pdf(p.direction)};
     for (T v : more)
         if (!apse::is_finite(v) || !(v >= T(0))) return false;
     return s.pdf > T(0) && !tab.empty() && !tld.empty() && c.pdf > T(0) && cw.weighted() && !cw.empty() &&
-           lit.cosine_weighted() && ts.pdf > T(0) && apse::is_tabulated(tl.map());
+           lit.cosine_weighted() && ts.pdf > T(0) && apse::is_tabulated(tl.map()) && p.pdf > T(0) && !psa.empty();
 }
 
 int main() {

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Numerical check of the formulas written in docs/math.md, at 40 digits with mpmath.
+"""Numerical check of the formulas written in docs/math.md (§1–§13), at 40 digits with mpmath.
 
     python3 tools/check_math_notes.py          # under a minute on one core; exit status 1 on a failure
 
@@ -517,12 +517,58 @@ def print_reference_values():
     report('Reference values (§10)')
 
 
+def check_projected_solid_angle():
+    """§13: F against quadrature of its density, the two forms of c sin(theta), the rim's
+    theta_max against the cone, E's series, the horizon's crossings of the boundary and dphi/dt."""
+    rnd = random.Random(13)
+    tiny = mpf(10) ** -30
+    for _ in range(40):
+        a, b = mpf(rnd.uniform(0, 1)), mpf(rnd.uniform(-1, 1))
+        end = mpf(rnd.uniform(0.01, 1.5))
+        if a * cos(end) + b * sin(end) < 0:
+            continue
+        F = (a * sin(end) ** 2 + b * (end - sin(end) * cos(end))) / 2
+        rec('§13 F(d) = ∫ sin t (a cos t + b sin t) dt', F / quad(lambda t: sin(t) * (a * cos(t) + b * sin(t)), [0, end]) - 1, tiny)
+        # n_z <= 0: c = K sin d and sin theta = (s sin d − n_z cos d)/K around theta_0
+        nz, s = -mpf(rnd.uniform(0, 1)), mpf(rnd.uniform(0.01, 1))
+        K = sqrt(nz ** 2 + s ** 2)
+        th0 = atan2(-nz, s)
+        d = mpf(rnd.uniform(0, 1))
+        th = th0 + d
+        rec('§13 c = K sin d after the horizon', (nz * cos(th) + s * sin(th)) - K * sin(d), tiny)
+        rec('§13 sin theta = (s sin d − n_z cos d)/K', sin(th) - (s * sin(d) - nz * cos(d)) / K, tiny)
+    for x in (mpf('1e-6'), mpf('0.1'), mpf('0.3'), mpf('0.49')):  # E's Taylor series (9 terms)
+        y2, p = 4 * x * x, mpf(1)
+        for den in (342, 272, 210, 156, 110, 72, 42, 20):
+            p = 1 - y2 / den * p
+        rec('§13 E series below d = 1/2 (relative)', (mpf(2) / 3 * x ** 3 * p) / (x - sin(x) * cos(x)) - 1, mpf('1e-16'))
+    for ta, tb in ((mpf(3), mpf('0.5')), (mpf('0.01'), mpf('0.002')), (mpf(40), mpf(2))):
+        for phi in (mpf('0.2'), mpf('1.1'), mpf('2.5')):
+            D = cos(phi) ** 2 / ta ** 2 + sin(phi) ** 2 / tb ** 2
+            st, ct = 1 / sqrt(1 + D), sqrt(D) / sqrt(1 + D)
+            gx, gy = st * cos(phi) / ct, st * sin(phi) / ct  # the rim point in the gnomonic plane
+            rec('§13 theta_max on the cone', (gx / ta) ** 2 + (gy / tb) ** 2 - 1, tiny)
+        # the horizon's line n_x x + n_y y = −n_z crosses the boundary at psi_n ± gamma
+        nx, ny, nz = mpf('0.7'), mpf('0.4'), -mpf('0.3') * min(ta, tb)
+        L = sqrt((nx * ta) ** 2 + (ny * tb) ** 2)
+        psin, gam = atan2(ny * tb, nx * ta), mp.acos(-nz / L)
+        for psi in (psin + gam, psin - gam):
+            rec('§13 the horizon crosses the boundary at psi_n ± gamma', nx * ta * cos(psi) + ny * tb * sin(psi) + nz, tiny)
+    for q in (mpf('0.05'), mpf('0.6'), mpf(1)):  # dphi/dt = 2 pi q / (cos^2 tau + q^2 sin^2 tau)
+        for t in (mpf('0.03'), mpf('0.11'), mpf('0.2')):
+            phi = lambda tt: atan2(q * sin(2 * pi * tt), cos(2 * pi * tt))
+            tau = 2 * pi * t
+            rec('§13 dphi/dt', diff(phi, t) / (2 * pi * q / (cos(tau) ** 2 + q ** 2 * sin(tau) ** 2)) - 1, mpf('1e-25'))
+    report('Projected-solid-angle sampling (§13)')
+
+
 if __name__ == '__main__':
     check_ellipse_forms()
     check_projection()
     check_elliptic()
     check_maps_and_tables()
     print_reference_values()
+    check_projected_solid_angle()
     if FAILED:
         print(f'\n{len(FAILED)} check(s) failed: ' + ', '.join(FAILED))
         sys.exit(1)

@@ -20,5 +20,6 @@
 #include "maps/ld_radial.hpp"
 #include "maps/parallel.hpp"
 #include "maps/tabulated.hpp"
+#include "projected_solid_angle.hpp"
 #include "cosine_weighted.hpp"
 #include "disk_light.hpp"

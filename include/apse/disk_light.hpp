@@ -23,7 +23,7 @@
 ///
 /// Every pdf here is exactly the density its sampler draws from: 1/Omega for the exact maps
 /// (radial, LD-radial, parallel), the tabulated maps' own density (within 0.44 % of 1/Omega for
-/// the default table, not equal to it), the warped density for the cosine-weighted samplers —
+/// the default table, not equal to it), the cosine-weighted density (ProjectedSolidAngleSampler) for the cosine-weighted samplers —
 /// so MIS weights computed with them sum to 1.
 ///
 /// The geometry is two-sided (the disk seen from behind gives the same ellipse); one-sided
@@ -74,7 +74,7 @@ template <class T> using DiskLightSample = PointSample<T>;
 /// uniformly in solid angle (exact maps), with a tabulated map's density, or, given the
 /// receiver's normal, cosine-weighted (CosineWeighted). Trivially copyable (the tabulated maps
 /// hold a pointer into the table, which must outlive the light); holds only the chosen sampler
-/// (a union: 1248 bytes in double, 656 in float, set by the cosine-weighted tabulated samplers;
+/// (a union: 880 bytes in double, 472 in float, set by the cosine-weighted tabulated samplers;
 /// the plain maps alone would take 488 and 272).
 template <class T> class DiskLight {
     static_assert(detail::is_real_type<T>(), "apse: DiskLight<T>: T must be float or double");
@@ -306,7 +306,7 @@ APSE_FUNC T disk_light_pdf(const glm::vec<3, T>& o, const glm::vec<3, T>& center
 /// Density in solid angle with which the cosine-weighted
 /// DiskLight(o, center, normal, radius, map, table, receiver_normal) samples w (exactly its
 /// pdf(w)), stateless. Cost: the projection; for directions that hit the disk, the whole
-/// cosine-weighted set-up (the warp's vertex cosines) — a renderer that queries many
+/// cosine-weighted set-up (its marginal nodes) — a renderer that queries many
 /// directions at one shading point should keep the DiskLight instead.
 template <class T>
 APSE_FUNC T disk_light_pdf(const glm::vec<3, T>& o, const glm::vec<3, T>& center, const glm::vec<3, T>& normal,

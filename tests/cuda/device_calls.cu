@@ -218,6 +218,11 @@ __global__ void cosine_kernel(const T* in, T* out, float* table_rows, int n) {
     const auto lts = lt.sample(u);
     s += lts.pdf + apse::disk_light_pdf(V(0), V(a, T(0), T(-1)), V(0, 0, 1), T(1), mt, view, V(T(1), T(0), T(-0.5)), lts.direction);
     s += apse::sample_disk_light(V(0), V(a, T(0), T(-1)), V(0, 0, 1), T(1), mt, view, V(T(1), T(0), T(-0.5)), u).pdf;
+    // the projected-solid-angle sampler on its own (and its default, empty state)
+    const apse::ProjectedSolidAngleSampler<T> psa(e, V(T(0.2), T(0.1), T(-1)));
+    const auto p = psa.sample(u);
+    s += p.pdf + psa.pdf(p.direction) + psa.invert(p.direction).y + T(psa.empty() ? 1 : 0) + psa.ellipse().tan_beta +
+         apse::ProjectedSolidAngleSampler<T>().pdf(p.direction);
     out[i] = s;
 }
 
