@@ -7,7 +7,7 @@
 #             API reference (warnings are errors)
 #   sanitize: g++, Debug, AddressSanitizer + UndefinedBehaviorSanitizer
 #   clang   : clang++, Release, plus libFuzzer runs from the committed corpora (85 s in all)
-#   fastmath: g++ -O3 -ffast-math -fno-finite-math-only: the robustness (except denormal
+#   fastmath: g++ -O3 -ffast-math -fno-finite-math-only: the cosine-weighted, robustness (except denormal
 #             arguments, flushed to zero), statistics and fuzz-corpus tests
 #   fma-nosimd: g++ -march=x86-64-v3 (FMA contraction on) with APSE_NO_SIMD (the scalar pairs):
 #             the whole suite
@@ -57,7 +57,7 @@ run_build clang -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_COMPILER=clang++ -DAPSE_B
   -DAPSE_TEST_CONSUMERS=OFF -DAPSE_TEST_CUDA=OFF
 run_build fastmath -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_COMPILER=g++ \
   "-DCMAKE_CXX_FLAGS=-O3 -ffast-math -fno-finite-math-only" \
-  "-DAPSE_TEST_SPEC=[robust]~[denormals]~[extreme],[robustness],[chi2],[unbiased],[mc]" -DAPSE_TEST_CONSUMERS=OFF \
+  "-DAPSE_TEST_SPEC=[robust]~[denormals]~[extreme],[robustness],[chi2],[unbiased],[mc],[cosine]" -DAPSE_TEST_CONSUMERS=OFF \
   -DAPSE_TEST_CUDA=OFF -DAPSE_BUILD_BENCHMARKS=OFF -DAPSE_BUILD_EXAMPLES=OFF
 if grep -qw avx2 /proc/cpuinfo && grep -qw fma /proc/cpuinfo; then
   run_build fma-nosimd -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_COMPILER=g++ \
