@@ -255,15 +255,15 @@ template <class T> void round_trip_all_maps(const Config& c) {
 
 }  // namespace
 
-TEST_CASE("cosine-weighted: chi-square against the reported pdf, double", "[cosine]") {
+TEST_CASE("cosine-weighted: chi-square against the reported pdf, double", "[cosine][chi2]") {
     for (const Config& c : kConfigs) chi2_all_maps<double>(c);
 }
 
-TEST_CASE("cosine-weighted: chi-square against the reported pdf, float", "[cosine]") {
+TEST_CASE("cosine-weighted: chi-square against the reported pdf, float", "[cosine][chi2]") {
     for (const Config& c : kConfigs) chi2_all_maps<float>(c);
 }
 
-TEST_CASE("cosine-weighted: Monte Carlo mean of the projected solid angle within 5 standard errors", "[cosine]") {
+TEST_CASE("cosine-weighted: Monte Carlo mean of the projected solid angle within 5 standard errors", "[cosine][mc]") {
     for (const Config& c : kConfigs) {
         mc_all_maps<double>(c);
         mc_all_maps<float>(c);
@@ -316,7 +316,7 @@ TEST_CASE("cosine-weighted: no sample below the horizon of straddling lights", "
     }
 }
 
-TEST_CASE("cosine-weighted: MIS with a cosine-sampled BSDF converges to the reference", "[cosine]") {
+TEST_CASE("cosine-weighted: MIS with a cosine-sampled BSDF converges to the reference", "[cosine][mc]") {
     // Irradiance ∫ max(0, n·ω) dω over the light by one light sample (this sampler) and one
     // cosine-sampled direction per iteration, balance heuristic: unbiased only if the light's
     // pdf(ω) is the density of its samples and 0 off the light.
@@ -418,7 +418,7 @@ TEMPLATE_TEST_CASE("cosine-weighted: degenerate normals, lights below the horizo
         }
 }
 
-TEST_CASE("cosine-weighted: stratification kept (jittered beats independent)", "[cosine]") {
+TEST_CASE("cosine-weighted: stratification kept (jittered beats independent)", "[cosine][stratification]") {
     // Variance of the 16 × 16-point estimator of ∫ max(0, n·ω) dω with jittered vs independent
     // points. With the exact conditional along each azimuth, f/pdf depends on the azimuth alone
     // (the marginal's ratio to its piecewise-linear fit, which varies at the scale of the 8 nodes),
@@ -443,8 +443,8 @@ TEST_CASE("cosine-weighted: stratification kept (jittered beats independent)", "
     }
 }
 
-TEMPLATE_TEST_CASE("cosine-weighted DiskLight: the wrapper's density, points on the disk, unbiased", "[cosine]", float,
-                   double) {
+TEMPLATE_TEST_CASE("cosine-weighted DiskLight: the wrapper's density, points on the disk, unbiased",
+                   "[cosine][unbiased]", float, double) {
     using T = TestType;
     using V3 = glm::vec<3, T>;
     // the disk of kConfigs[2] (straddling the horizon), seen from the origin
