@@ -236,7 +236,8 @@ public:
     /// Direction for the point u of the unit square (clamped into [0, 1]^2): a world-space unit
     /// vector inside the ellipse and above the receiver's horizon, with its exact density in
     /// solid angle. NaN u or empty(): pdf 0 and the ellipse's centre direction; u2 = 0 or 1
-    /// where the range ends at the horizon: that horizon direction with pdf 0 (n·ω = 0).
+    /// where the range ends at the horizon: that horizon direction with pdf 0 (n·ω = 0); a
+    /// density beyond T's range (float, lights of ~1e-36 sr grazing the horizon): pdf 0.
     APSE_FUNC DirectionSample<T> sample(const vec2& u) const noexcept {
         bool ok = !empty_;
         const vec2 uc = detail::clamp_unit(u, ok);
@@ -281,8 +282,7 @@ public:
         const T st = sd * r.cos0 + cd * r.sin0, ct = cd * r.cos0 - sd * r.sin0;
         const T c = r.kc > T(0) ? r.kc * sd : r.a * cd + r.b * sd;
         const vec3 l(st * a.cp, st * a.sp, ct);
-        const T pdf = c > T(0) ? m * inv_total_ / (width_ * a.jacobian) * (c / r.mass * r.k) * r.k : T(0);
-        return {e_.to_world(l), pdf};
+        return {e_.to_world(l), density(m, a, r, c)};
     }
 
     /// Density of sample() at the world-space direction `d` (any non-zero length), in solid
@@ -296,7 +296,7 @@ public:
         const Azimuth a = azimuth_of(l.x, l.y);
         const detail::PsaRay<T> r = ray(a);
         if (!r.valid || !(r.mass > T(0))) return T(0);
-        return marginal(a.x) * inv_total_ / (width_ * a.jacobian) * (c / r.mass * r.k) * r.k;
+        return density(marginal(a.x), a, r, c);
     }
 
     /// The point of the unit square whose sample has direction `d`: u1 the azimuth's CDF, u2
@@ -336,6 +336,16 @@ private:
         const T r2 = sx * sx + q_ * q_ * sy * sy, inv = T(1) / std::sqrt(r2);
         const vec3 h = detail::place_in_quadrant(f.quadrant, sx * inv, q_ * sy * inv, T(0));
         return {x, h.x, h.y, detail::psa_turn_jacobian<T>() * q_ / r2};
+    }
+
+    /// The density in solid angle of the direction with cosine c on the ray r of azimuth a, where
+    /// the azimuth's marginal is m: m / (M J) · c / F. 0 for c <= 0, and 0 where the density
+    /// overflows T (beyond ~3e38 in float: only lights of ~1e-36 sr or less grazing the
+    /// horizon), so that such a sample is declined rather than given an infinite pdf.
+    APSE_FUNC T density(T m, const Azimuth& a, const detail::PsaRay<T>& r, T c) const noexcept {
+        if (!(c > T(0))) return T(0);
+        const T p = m * inv_total_ / (width_ * a.jacobian) * (c / r.mass * r.k) * r.k;
+        return is_finite(p) ? p : T(0);
     }
 
     /// The ray of an azimuth, its end angle to a few ulps (angle_of) and its mass.

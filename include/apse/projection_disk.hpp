@@ -75,11 +75,14 @@ APSE_FUNC SphericalEllipse<T> project_disk(const glm::vec<3, T>& o, const glm::v
     }
     // Height d of o above the plane and the in-plane offset v (foot of o -> centre), h = |v|;
     // d² and h² without square roots (they start the critical path to the tangents).
-    const T wn = glm::dot(w, nv);
-    const T d2 = wn * wn * inv_n2;  // may underflow to 0 for d ~ 1e-20 |w| (float): harmless
+    const T wn = glm::dot(w, nv), wn_n2 = wn * inv_n2;
+    // d² as (wn / |N|²) wn, not wn² / |N|²: wn² alone is subnormal in float for |N|² ~ 1e-17 and
+    // d ~ 1e-14 |w| (and d² then off by percents); d² itself may underflow to 0 for d ~ 1e-20 |w|
+    // (float): harmless
+    const T d2 = wn_n2 * wn;
     const T d = std::fabs(wn) * inv_n;
     if (!(d > T(0))) return E::make_empty();
-    vec3 v = w - (wn * inv_n2) * nv;
+    vec3 v = w - wn_n2 * nv;
     T h2 = glm::dot(v, v);  // accurate to O(eps |w|)²: enough for alpha and beta
     // A second Gram–Schmidt pass makes v (the frame) exactly perpendicular to n when v is short
     // compared with w (off the critical path: only the frame uses it).
