@@ -50,7 +50,7 @@ inline double unit(FuzzedDataProvider& in) {
 /// saves the input).
 [[noreturn]] inline void fail(const char* target, const char* what, const double* inputs, int count) {
     std::fprintf(stderr, "%s: %s\n", target, what);
-    for (int i = 0; i < count && i < 16; ++i) std::fprintf(stderr, "  in[%d] = %.17g\n", i, inputs[i]);
+    for (int i = 0; i < count; ++i) std::fprintf(stderr, "  in[%d] = %.17g\n", i, inputs[i]);
     std::abort();
 }
 
