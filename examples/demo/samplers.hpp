@@ -10,7 +10,6 @@
 /// point on the disk and distance to it.
 
 #include <array>
-#include <memory>
 #include <vector>
 
 #include <apse/apse.hpp>
@@ -80,11 +79,6 @@ template <class Map> struct MapFactory {
     }
 };
 
-/// The shared table (built once, read-only while rendering).
-struct TabulatedTable {
-    TabulatedTable() : table(std::make_unique<apse::TabulationTable>()) { table->build(); }
-    std::unique_ptr<apse::TabulationTable> table;
-};
 struct TabulatedFactory {  // the paper's default: tabulated LD-radial (code `concentrictab`)
     apse::TabulationView view;
     auto operator()(const vec3& o, const vec3&, const Disk& L) const {
@@ -101,11 +95,8 @@ struct CosineFactory {
         return wrap(apse::CosineWeighted<apse::TabulatedLdRadialMap<float>>(map, n), o, L);
     }
 };
-inline const apse::TabulationView& tabulation_view() {
-    static const TabulatedTable t;
-    static const apse::TabulationView v = t.table->view();
-    return v;
-}
+/// The shared table (apse::default_table(): built once, thread-safely; read-only while rendering).
+inline apse::TabulationView tabulation_view() { return apse::default_table().view(); }
 
 /// Calls f(factory) with the factory of kind k (one template instantiation per kind).
 template <class F> void with_factory(Kind k, F&& f) {

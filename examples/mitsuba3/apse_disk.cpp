@@ -62,16 +62,6 @@ inline ApseDiskSampler parse_sampler(const std::string &name) {
           "tabulated_ld_radial, cosine_ld_radial, cosine_tabulated_ld_radial)", name);
 }
 
-/// The tabulation table of the tabulated maps, built once per process (~15 ms, 77 KB).
-inline const apse::TabulationTable &table() {
-    static const apse::TabulationTable t = [] {
-        apse::TabulationTable r;
-        r.build();
-        return r;
-    }();
-    return t;
-}
-
 /// The light's geometry: the planar ellipse {center + s u + t v : s² + t² <= 1} (a disk of
 /// radius |u| when u and v are orthogonal and of equal length) and its emitting normal.
 struct Geometry {
@@ -117,13 +107,13 @@ auto with_sampler(ApseDiskSampler kind, const Geometry &g, const gvec3 &o, const
         case ApseDiskSampler::radial: return f(apse::RadialMap<float>(project(g, o)));
         case ApseDiskSampler::parallel: return f(apse::ParallelMap<float>(project(g, o)));
         case ApseDiskSampler::tabulated_ld_radial:
-            return f(apse::TabulatedLdRadialMap<float>(project(g, o), table().view()));
+            return f(apse::TabulatedLdRadialMap<float>(project(g, o), apse::default_table().view()));
         case ApseDiskSampler::cosine_ld_radial:
             return f(CosineWeighted<apse::LdRadialMap<float>>(apse::LdRadialMap<float>(project(g, o)),
                                                               receiver_normal(g, o, n)));
         case ApseDiskSampler::cosine_tabulated_ld_radial:
             return f(CosineWeighted<apse::TabulatedLdRadialMap<float>>(
-                apse::TabulatedLdRadialMap<float>(project(g, o), table().view()), receiver_normal(g, o, n)));
+                apse::TabulatedLdRadialMap<float>(project(g, o), apse::default_table().view()), receiver_normal(g, o, n)));
         case ApseDiskSampler::ld_radial: break;
     }
     return f(apse::LdRadialMap<float>(project(g, o)));
@@ -226,13 +216,12 @@ public:
         if (!active || !lit(o)) return { ds, 0.f };
         const apse::DirectionSample<float> s = apse_disk_detail::with_sampler(
             m_sampler, m_geom, o, to_glm(it.n), [&](const auto &sampler) { return sampler.sample(gvec2(sample.x(), sample.y())); });
-        if (!(s.pdf > 0.f)) return { ds, 0.f };
         // Where the ray meets the light's plane: the point the visibility ray is traced to.
-        const float t = glm::dot(m_geom.center - o, m_geom.normal) / glm::dot(s.direction, m_geom.normal);
-        if (!(t > 0.f) || !std::isfinite(t)) return { ds, 0.f };
+        const apse::PointSample<float> hit = apse::point_on_plane(s, o, m_geom.center, m_geom.normal);
+        if (!(hit.pdf > 0.f)) return { ds, 0.f };
         ds.d = Vector3f(s.direction.x, s.direction.y, s.direction.z);
-        ds.dist = t;
-        ds.p = it.p + t * ds.d;
+        ds.dist = hit.distance;
+        ds.p = Point3f(hit.point.x, hit.point.y, hit.point.z);
         ds.n = m_normal;
         ds.time = it.time;
         ds.pdf = s.pdf;
