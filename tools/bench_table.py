@@ -22,6 +22,11 @@ benchmark names:
                    --benchmark_format=json > samplers.json
     python3 tools/bench_table.py samplers.json
 
+  Given several bench_samplers outputs (the same benchmark built in different code layouts,
+  bench_samplers_align*; tools/speed.sh runs them), every ratio is the median over them of the
+  per-run ratio, every time the median time, and a second table gives each ratio's spread
+  (lowest–highest) over the layouts.
+
 Uses the "median" aggregates when repetitions were run, the plain runs otherwise. The header
 states the CPU and compiler recorded in the JSON context. Only the standard library is needed.
 """
@@ -66,7 +71,8 @@ SAMPLERS = [
     ('cosine_parallel', '`CosineWeighted<ParallelMap>`'),
     ('cosine_tabulated', '`CosineWeighted<TabulatedMap>`'),
     ('cosine_tabulated_ld_radial', '`CosineWeighted<TabulatedLdRadialMap>`'),
-    ('cosine_tabulated_ld_radial_8x2', '`CosineWeighted<TabulatedLdRadialMap, 8, 2>`'),
+    ('cosine_tabulated_ld_radial_16_nodes', '`CosineWeighted<TabulatedLdRadialMap, 16>`'),
+    ('cosine_tabulated_ld_radial_32_nodes', '`CosineWeighted<TabulatedLdRadialMap, 32>`'),
 ]
 # set-up parts (cost breakdown only)
 PARTS = [('projection', 'project_disk'), ('projection_solid_angle', 'project_disk + solid_angle')]
@@ -102,7 +108,8 @@ def header(ctx, have_median, repetitions, extra=''):
         else 'CPU time of one run')
 
 
-def samplers_table(data):
+def sampler_runs(data):
+    """{(sampler, type, samples): run} of one bench_samplers output, and its repetitions."""
     runs, have_median = selected_runs(data)
     res = {}
     reps = '?'
@@ -111,32 +118,64 @@ def samplers_table(data):
         if m:
             res[(m.group(1), m.group(2), int(m.group(3)))] = b
             reps = b.get('repetitions', reps)
-    print(header(data.get('context', {}), have_median, reps))
+    return res, have_median, reps
+
+
+def median(values):
+    v = sorted(values)
+    n = len(v)
+    return v[n // 2] if n % 2 else 0.5 * (v[n // 2 - 1] + v[n // 2])
+
+
+def layout_name(data):
+    exe = data.get('context', {}).get('executable', '')
+    m = re.search(r'_align(\d+)$', exe)
+    return ('functions aligned to %s bytes' % m.group(1)) if m else 'default layout'
+
+
+def samplers_table(datas):
+    layouts = [sampler_runs(d) for d in datas]
+    have_median, reps = layouts[0][1], layouts[0][2]
+    keys = set().union(*(set(r) for r, _, _ in layouts))
+    # per key: the median time over the layouts, and the per-layout ratios to area sampling
+    times, ratios = {}, {}
+    for key in keys:
+        t = [ns(r[key]) for r, _, _ in layouts if key in r]
+        times[key] = median(t)
+        q = [ns(r[key]) / ns(r[('area',) + key[1:]]) for r, _, _ in layouts
+             if key in r and ('area',) + key[1:] in r]
+        if q:
+            ratios[key] = q
+    first = layouts[0][0]
+    extra = ''
+    if len(datas) > 1:
+        extra = '; median over %d code layouts (%s)' % (len(datas), ', '.join(layout_name(d) for d in datas))
+    print(header(datas[0].get('context', {}), have_median, reps, extra))
     print()
     cols = [('double', 1), ('double', 16), ('float', 1), ('float', 16)]
+    known = [k for k, _ in SAMPLERS] + [k for k, _ in PARTS]
+    rows = SAMPLERS + [(k, '`%s`' % k) for k in sorted({key[0] for key in keys}) if k not in known]
+    rows = [(k, t) for k, t in rows if any(key[0] == k and key[2] > 0 for key in keys)]
+
+    def cell(key, ty, n):
+        if (key, ty, n) not in times:
+            return '—'
+        if key == 'area':
+            return '1 (%.0f ns)' % times[(key, ty, n)]
+        if (key, ty, n) not in ratios:
+            return '%.0f ns' % times[(key, ty, n)]
+        return '%.1f× (%.0f ns)' % (median(ratios[(key, ty, n)]), times[(key, ty, n)])
+
     print('| sampler | ' + ' | '.join('%s, set-up + %d' % c for c in cols) +
           ' | iterations / sample (double, float) | accepted (double, float) |')
     print('|---|' + '---:|' * (len(cols) + 2))
-    known = [k for k, _ in SAMPLERS] + [k for k, _ in PARTS]
-    rows = SAMPLERS + [(k, '`%s`' % k) for k in sorted({key[0] for key in res}) if k not in known]
     for key, title in rows:
-        if not any(k[0] == key and k[2] > 0 for k in res):
-            continue
-        cells = [title]
-        for ty, n in cols:
-            b, ref = res.get((key, ty, n)), res.get(('area', ty, n))
-            if b is None:
-                cells.append('—')
-            elif ref is None:
-                cells.append('%.0f ns' % ns(b))
-            else:
-                cells.append('%.1f× (%.0f ns)' % (ns(b) / ns(ref), ns(b)) if key != 'area'
-                             else '1 (%.0f ns)' % ns(b))
+        cells = [title] + [cell(key, ty, n) for ty, n in cols]
 
         def counter(name, fmt):
             vals = []
             for ty in ('double', 'float'):
-                b = res.get((key, ty, 16)) or res.get((key, ty, 1))
+                b = first.get((key, ty, 16)) or first.get((key, ty, 1))
                 vals.append(fmt % b[name] if b is not None and name in b else None)
             return '—' if all(v is None for v in vals) else ', '.join(v or '—' for v in vals)
         cells.append(counter('mean_iterations', '%.3g'))
@@ -146,17 +185,31 @@ def samplers_table(data):
     print('Per fresh shading point: set-up (projection + map, or the baseline\'s own) + 1 or 16 '
           'samples, 1024 seeded unit disks 0.1–1000 radii away (log-uniform), all orientations, '
           'the same points of the square for every sampler. Ratio = median time / median time of '
-          'DiskAreaSampler in the same run (> 1: slower than area sampling); iterations = '
-          'inversion iterations (exact maps) or table-walk steps (tabulated) per sample, from the '
-          'set-up + 16 runs; accepted = fraction of samples with pdf > 0.')
-    breakdown_table(res)
+          'DiskAreaSampler in the same run (> 1: slower than area sampling)' +
+          (', then the median of that ratio over the layouts' if len(datas) > 1 else '') +
+          '; iterations = inversion iterations (exact maps) or table-walk steps (tabulated) per '
+          'sample, from the set-up + 16 runs; accepted = fraction of samples with pdf > 0.')
+    if len(datas) > 1:
+        print()
+        print('Spread of each ratio over the %d layouts (lowest–highest):' % len(datas))
+        print()
+        print('| sampler | ' + ' | '.join('%s, set-up + %d' % c for c in cols) + ' |')
+        print('|---|' + '---:|' * len(cols))
+        for key, title in rows:
+            if key == 'area':
+                continue
+            cells = [title]
+            for ty, n in cols:
+                q = ratios.get((key, ty, n))
+                cells.append('—' if not q else '%.1f–%.1f×' % (min(q), max(q)))
+            print('| ' + ' | '.join(cells) + ' |')
+    breakdown_table(times)
 
 
-def breakdown_table(res):
-    """Cost breakdown per map from the set-up-only runs (ns; medians of the same run)."""
+def breakdown_table(times):
+    """Cost breakdown per map from the set-up-only runs (ns: median times)."""
     def t(key, ty, n):
-        b = res.get((key, ty, n))
-        return None if b is None else ns(b)
+        return times.get((key, ty, n))
     if t('projection', 'double', 0) is None:
         return
     print()
@@ -176,8 +229,8 @@ def breakdown_table(res):
                      ('%.1f×' % (one / area)) if area else '—']
             print('| ' + ' | '.join(cells) + ' |')
     print()
-    print('ns, medians of the same run. projection = project_disk alone (the whole ellipse kept); '
-          'solid angle = (project_disk + solid_angle) − project_disk (only the exact maps compute '
+    print('ns, median times (over the layouts, if several). projection = project_disk alone (the '
+          'whole ellipse kept); solid angle = (project_disk + solid_angle) − project_disk (only the exact maps compute '
           'it); map set-up = set-up alone (every field of the map kept) − the two before; per sample '
           '= (set-up + 16 − set-up + 1)/15. The parts are differences of medians, so they are '
           'accurate to a few ns.')
@@ -201,10 +254,10 @@ def load(data):
 
 
 def main():
-    stream = open(sys.argv[1]) if len(sys.argv) > 1 else sys.stdin
-    data = json.load(stream)
+    datas = [json.load(open(f)) for f in sys.argv[1:]] or [json.load(sys.stdin)]
+    data = datas[0]
     if any(SAMPLER_NAME.match(b.get('run_name', b['name'])) for b in data.get('benchmarks', [])):
-        samplers_table(data)
+        samplers_table(datas)
         return
     ctx, times, have_median = load(data)
     cpu = ctx.get('cpu_model', 'unknown CPU')
