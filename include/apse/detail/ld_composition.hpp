@@ -15,7 +15,7 @@
 #include <cmath>
 
 #include "../config.hpp"
-#include "../math.hpp"
+#include "math.hpp"
 #include "../sample.hpp"
 #include "concentric.hpp"
 #include "glm.hpp"

@@ -45,7 +45,7 @@ public:
     APSE_FUNC explicit RadialMap(const SphericalEllipse<T>& ellipse) noexcept
         : ellipse_(ellipse), areas_(detail::EllipseAreas<T>::make(ellipse)) {
         omega_ = detail::solid_angle_of(ellipse);
-        valid_ = !ellipse.empty() && omega_ > T(0) && is_finite(omega_);
+        valid_ = !ellipse.empty() && omega_ > T(0) && detail::is_finite(omega_);
         inv_omega_ = valid_ ? T(1) / omega_ : T(0);
         quarter_ = T(0.25) * omega_;
         // Lambert guess: the equal-area image of a small ellipse has semi-axes 2 sin(alpha/2),
@@ -107,14 +107,14 @@ public:
         const T n = std::sqrt(bx * bx + ay * ay);
         const T ct = n > T(0) ? bx / n : T(1), st = n > T(0) ? ay / n : T(0);
         const T c = areas_.c_max(ct, st);
-        const T f = clamp(areas_.radial_area(ct, st, c) / quarter_, T(0), T(1));
+        const T f = detail::clamp(areas_.radial_area(ct, st, c) / quarter_, T(0), T(1));
         const T u1 = detail::unfold_quadrant_fraction(q, f);
         T u2 = T(1);
         if (l.z > T(0)) {
             const detail::RadialFraction<T> r = detail::radial_fraction(areas_, x, y, l.z, ct, st, c);
-            u2 = clamp(r.one_minus_cos / r.one_minus_c, T(0), T(1));
+            u2 = detail::clamp(r.one_minus_cos / r.one_minus_c, T(0), T(1));
         }
-        return vec2(clamp(u1, T(0), T(1)), u2);
+        return vec2(detail::clamp(u1, T(0), T(1)), u2);
     }
 
     /// Solves the quadrant equation Omega_r(tau) = f Omega/4 (f in [0, 1]) for the boundary
@@ -135,9 +135,9 @@ public:
     /// the Lambert-equal-area azimuth tan tau = kappa tan(f pi/2) (exact for caps and small
     /// ellipses; one sin/cos, one atan2).
     APSE_FUNC detail::RadialPoint<T> guess_quadrant(T f) const noexcept {
-        const T h = clamp(f, T(0), T(1)) * half_pi_v<T>;
+        const T h = detail::clamp(f, T(0), T(1)) * half_pi_v<T>;
         T ct, st;
-        detail::lambert_tau(kappa_, max_of(std::cos(h), T(0)), max_of(std::sin(h), T(0)), ct, st);
+        detail::lambert_tau(kappa_, detail::max_of(std::cos(h), T(0)), detail::max_of(std::sin(h), T(0)), ct, st);
         return areas_.radial_point(std::atan2(st, ct), ct, st);
     }
 
@@ -151,7 +151,7 @@ public:
     /// Omega_r(phi), cancellation-free; for tests and diagnostics).
     APSE_FUNC T quadrant_area(T phi) const noexcept {
         const T c = std::cos(phi), s = std::sin(phi);
-        const T bx = areas_.ba * max_of(c, T(0)), ay = max_of(s, T(0));
+        const T bx = areas_.ba * detail::max_of(c, T(0)), ay = detail::max_of(s, T(0));
         const T n = std::sqrt(bx * bx + ay * ay);
         if (!(n > T(0))) return T(0);
         const T ct = bx / n, st = ay / n;
