@@ -52,9 +52,9 @@ static bool maps_disk_light_ok() {
     apse::SampleDiagnostics diag{0};
     const T values[] = {
         radial.sample(u).pdf, apse::sample_with_diagnostics(radial, u, diag).pdf, radial.pdf(s.direction), radial.invert(s.direction).x,
-        radial.solid_angle(), radial.quadrant_area(T(0.5)), ld.sample(u).pdf, ld.pdf(s.direction),
+        radial.solid_angle(), apse::detail::MapAccess::quadrant_area(radial, T(0.5)), ld.sample(u).pdf, ld.pdf(s.direction),
         ld.invert(s.direction).y, parallel.sample(u).pdf, parallel.pdf(s.direction), parallel.invert(s.direction).x,
-        parallel.half_area(T(0.1)), s.pdf, s.distance, light.pdf(s.direction), light.invert(s.direction).x,
+        apse::detail::MapAccess::half_area(parallel, T(0.1)), s.pdf, s.distance, light.pdf(s.direction), light.invert(s.direction).x,
         apse::sample_disk_light(V(0), V(T(0.5), T(0), T(-1)), V(0, 0, 1), T(1), apse::DiskMap::radial, u).pdf,
         apse::disk_light_pdf(V(0), V(T(0.5), T(0), T(-1)), V(0, 0, 1), T(1), s.direction),
     };

@@ -17,6 +17,7 @@
 #include "../detail/cumulative_area.hpp"
 #include "../detail/glm.hpp"
 #include "../detail/inversion.hpp"
+#include "../detail/map_access.hpp"
 #include "../detail/quadrant.hpp"
 
 namespace apse {
@@ -124,6 +125,10 @@ public:
     /// ellipse (boundary included), 0 outside, for an empty ellipse or a zero/NaN direction.
     APSE_FUNC T pdf(const vec3& d) const noexcept { return ellipse_.contains(d) ? inv_omega_ : T(0); }
 
+private:
+    friend struct detail::DiagnosticsAccess;
+    friend struct detail::MapAccess;
+
     /// Solves the edge-area equation J(e) = g Omega/2 (g in [0, 1]: the fraction of a half
     /// beyond the slice) for the slice state, with the inversion iterations in `iterations`.
     APSE_FUNC detail::ParallelPoint<T> solve_half(T g, int& iterations) const noexcept {
@@ -140,23 +145,16 @@ public:
     }
 
     /// The first guess of solve_half for the edge fraction g in [0, 1] (the shape-blended
-    /// slice, detail parallel_guess; one sin/cos). Building block of CosineWeighted (a cheap
-    /// approximate image of the square's columns).
+    /// slice, detail parallel_guess; one sin/cos).
     APSE_FUNC detail::ParallelPoint<T> guess_half(T g) const noexcept {
         return areas_.parallel_point(detail::parallel_guess(detail::clamp(g, T(0), T(1)), beta_, blend_));
     }
 
-    /// The per-ellipse constants of the cumulative areas (building block).
-    APSE_FUNC const detail::EllipseAreas<T>& areas() const noexcept { return areas_; }
-
     /// Half-area I(psi) between the slices 0 and psi in [0, beta] (docs/math.md §5 I(psi),
-    /// cancellation-free; for tests and diagnostics). Omega_p(psi) = Omega/2 ± I(|psi|).
+    /// cancellation-free; for tests, through detail::MapAccess). Omega_p(psi) = Omega/2 ± I(|psi|).
     APSE_FUNC T half_area(T psi) const noexcept {
         return areas_.parallel_half_area(areas_.parallel_point(detail::clamp(beta_ - psi, T(0), beta_)));
     }
-
-private:
-    friend struct detail::DiagnosticsAccess;
 
     /// sample(u), counting the inversion iterations in `iterations` (detail/inversion.hpp).
     APSE_FUNC DirectionSample<T> sample_counted(const vec2& u, int& iterations) const noexcept {

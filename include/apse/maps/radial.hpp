@@ -17,6 +17,7 @@
 #include "../detail/cumulative_area.hpp"
 #include "../detail/glm.hpp"
 #include "../detail/inversion.hpp"
+#include "../detail/map_access.hpp"
 #include "../detail/quadrant.hpp"
 #include "../detail/radial_polar.hpp"
 
@@ -89,7 +90,11 @@ public:
     /// ellipse (boundary included), 0 outside, for an empty ellipse or a zero/NaN direction.
     APSE_FUNC T pdf(const vec3& d) const noexcept { return ellipse_.contains(d) ? inv_omega_ : T(0); }
 
-    /// Building block: the local-frame direction (x along the major axis, z the centre) for
+private:
+    friend struct detail::DiagnosticsAccess;
+    friend struct detail::MapAccess;
+
+    /// The local-frame direction (x along the major axis, z the centre) for
     /// (u1, u2) in [0, 1]^2 (not checked), with the inversion iterations in `iterations`.
     APSE_FUNC vec3 local_direction(T u1, T u2, int& iterations) const noexcept {
         const detail::QuadrantFold<T> fold = detail::fold_quadrant(u1);
@@ -97,8 +102,8 @@ public:
         return detail::radial_direction(areas_, fold.quadrant, p.ct, p.st, p.c_max, u2);
     }
 
-    /// Building block shared with LdRadialMap (detail/ld_composition.hpp): (u1, u2) of the unit
-    /// local direction `l` (clamped to [0, 1]^2).
+    /// (u1, u2) of the unit local direction `l` (clamped to [0, 1]^2): invert() and LdRadialMap's
+    /// inverse (detail/ld_composition.hpp, through detail::MapAccess).
     APSE_FUNC vec2 local_coordinates(const vec3& l) const noexcept {
         const int q = detail::quadrant_of(l.x, l.y);
         const T x = std::fabs(l.x), y = std::fabs(l.y);
@@ -141,14 +146,8 @@ public:
         return areas_.radial_point(std::atan2(st, ct), ct, st);
     }
 
-    /// The per-ellipse constants of the cumulative areas (building block).
-    APSE_FUNC const detail::EllipseAreas<T>& areas() const noexcept { return areas_; }
-
-    /// kappa = cos(alpha/2)/cos(beta/2), the Lambert guess's ratio (building block).
-    APSE_FUNC T kappa() const noexcept { return kappa_; }
-
     /// Cumulative area of the first quadrant up to the azimuth phi in [0, pi/2] (docs/math.md §4
-    /// Omega_r(phi), cancellation-free; for tests and diagnostics).
+    /// Omega_r(phi), cancellation-free; for tests, through detail::MapAccess).
     APSE_FUNC T quadrant_area(T phi) const noexcept {
         const T c = std::cos(phi), s = std::sin(phi);
         const T bx = areas_.ba * detail::max_of(c, T(0)), ay = detail::max_of(s, T(0));
@@ -157,9 +156,6 @@ public:
         const T ct = bx / n, st = ay / n;
         return areas_.radial_area(ct, st, areas_.c_max(ct, st));
     }
-
-private:
-    friend struct detail::DiagnosticsAccess;
 
     /// sample(u), counting the inversion iterations in `iterations` (0 for the exact first guess;
     /// detail/inversion.hpp).

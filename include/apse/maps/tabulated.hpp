@@ -38,6 +38,7 @@
 #include "../detail/cumulative_area.hpp"
 #include "../detail/glm.hpp"
 #include "../detail/ld_composition.hpp"
+#include "../detail/map_access.hpp"
 #include "../detail/pairs.hpp"
 #include "../detail/polynomial_trig.hpp"
 #include "../detail/quadrant.hpp"
@@ -141,7 +142,11 @@ public:
         return density(hi - lo, az.ct, az.st, areas_.c_max(az.ct, az.st));
     }
 
-    /// Building block: the local-frame direction for (u1, u2) in [0, 1]^2 (not checked), its
+private:
+    friend struct detail::DiagnosticsAccess;
+    friend struct detail::MapAccess;
+
+    /// The local-frame direction for (u1, u2) in [0, 1]^2 (not checked), its
     /// solid-angle density in `pdf` and the table-walk steps in `steps`.
     APSE_FUNC vec3 local_direction(T u1, T u2, T& pdf, int& steps) const noexcept {
         const detail::QuadrantFold<T> fold = detail::fold_quadrant(u1);
@@ -183,8 +188,8 @@ public:
         return detail::radial_direction(areas_, fold.quadrant, ct, st, c, inv_1pc, u2);  // as RadialMap
     }
 
-    /// Building block shared with TabulatedLdRadialMap (detail/ld_composition.hpp): (u1, u2) of
-    /// the unit local direction `l` (clamped to [0, 1]^2).
+    /// (u1, u2) of the unit local direction `l` (clamped to [0, 1]^2): invert() and
+    /// TabulatedLdRadialMap's inverse (detail/ld_composition.hpp, through detail::MapAccess).
     APSE_FUNC vec2 local_coordinates(const vec3& l) const noexcept {
         const int q = detail::quadrant_of(l.x, l.y);
         const T x = std::fabs(l.x), y = std::fabs(l.y);
@@ -201,15 +206,6 @@ public:
         }
         return vec2(detail::clamp(u1, T(0), T(1)), u2);
     }
-
-    /// The per-ellipse constants of the cumulative areas (building block).
-    APSE_FUNC const detail::EllipseAreas<T>& areas() const noexcept { return areas_; }
-
-    /// kappa = cos(alpha/2)/cos(beta/2), the ratio of the Lambert anomaly (building block).
-    APSE_FUNC T kappa() const noexcept { return kappa_; }
-
-private:
-    friend struct detail::DiagnosticsAccess;
 
     /// sample(u), counting the table-walk steps in `iterations` (0 when the uniform guess was the
     /// bin).
