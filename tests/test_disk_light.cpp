@@ -88,7 +88,7 @@ TEMPLATE_TEST_CASE("disk light: point, distance and pdf", "[disk_light]", float,
 TEMPLATE_TEST_CASE("disk light: degenerate and bad input", "[disk_light][robust]", float, double) {
     using T = TestType;
     const T nan = std::numeric_limits<T>::quiet_NaN(), inf = std::numeric_limits<T>::infinity();
-    auto finite3 = [](const Vec3<T>& v) { return apse::is_finite(v.x) && apse::is_finite(v.y) && apse::is_finite(v.z); };
+    auto finite3 = [](const Vec3<T>& v) { return apse::detail::is_finite(v.x) && apse::detail::is_finite(v.y) && apse::detail::is_finite(v.z); };
     const Vec3<T> o(0), c(0, 0, -1), n(0, 0, 1);
     struct Case { Vec3<T> o, c, n; T r; };
     const Case bad[] = {

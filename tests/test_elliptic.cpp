@@ -178,7 +178,7 @@ TEMPLATE_TEST_CASE("elliptic: identities", "[elliptic]", float, double) {
 TEMPLATE_TEST_CASE("elliptic: outside the domain the result is NaN", "[elliptic][robust]", float, double) {
     using T = TestType;
     const T nan = std::numeric_limits<T>::quiet_NaN(), inf = std::numeric_limits<T>::infinity();
-    auto is_nan = [](T v) { return apse::is_nan(v); };  // bit test: `v != v` folds to false under -ffast-math
+    auto is_nan = [](T v) { return apse::detail::is_nan(v); };  // bit test: `v != v` folds to false under -ffast-math
     // negative arguments, two zeros, NaN and infinities
     CHECK(is_nan(apse::carlson_rf(T(-1), T(1), T(1))));
     CHECK(is_nan(apse::carlson_rf(T(0), T(0), T(1))));

@@ -109,7 +109,7 @@ struct DiskGeometry {
 
 template <class T> bool unit_and_finite(const glm::vec<3, T>& v) {
     const double len = std::sqrt(double(v.x) * v.x + double(v.y) * v.y + double(v.z) * v.z);
-    return apse::is_finite(v.x) && apse::is_finite(v.y) && apse::is_finite(v.z) &&
+    return apse::detail::is_finite(v.x) && apse::detail::is_finite(v.y) && apse::detail::is_finite(v.z) &&
            std::fabs(len - 1.0) <= 8 * double(apse::epsilon<T>());
 }
 
@@ -331,13 +331,13 @@ TEMPLATE_TEST_CASE("gamito: retry N = 1 is single shot, defined behaviour on deg
             INFO("u = (" << u.x << ", " << u.y << ")");
             const auto p = s.sample(u);
             CHECK(unit_and_finite(p.direction));
-            CHECK(apse::is_finite(p.pdf));
+            CHECK(apse::detail::is_finite(p.pdf));
             CHECK(p.pdf >= T(0));
             if (expect_empty) CHECK(p.pdf == T(0));
         }
         for (const V d : {V(0, 0, -1), V(0, 0, 1), V(0, 0, 0), V(nan, 0, -1), V(inf, 0, -1), V(0.2, 0.3, -1e-30)}) {
             const T p = s.pdf(d);
-            CHECK(apse::is_finite(p));
+            CHECK(apse::detail::is_finite(p));
             CHECK(p >= T(0));
         }
     };

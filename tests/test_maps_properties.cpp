@@ -261,7 +261,7 @@ TEMPLATE_TEST_CASE("samples hit the projected disk", "[maps][disk]", float, doub
 TEMPLATE_TEST_CASE("degenerate and bad input: pdf 0 or a valid direction, never NaN", "[maps][robust]", float, double) {
     using T = TestType;
     const T nan = std::numeric_limits<T>::quiet_NaN(), inf = std::numeric_limits<T>::infinity();
-    auto finite3 = [](const Vec3<T>& v) { return apse::is_finite(v.x) && apse::is_finite(v.y) && apse::is_finite(v.z); };
+    auto finite3 = [](const Vec3<T>& v) { return apse::detail::is_finite(v.x) && apse::detail::is_finite(v.y) && apse::detail::is_finite(v.z); };
     // empty ellipse
     const auto empty = apse::SphericalEllipse<T>::make_empty();
     for_each_map(empty, [&](const std::string& name, const auto& map) {
@@ -271,7 +271,7 @@ TEMPLATE_TEST_CASE("degenerate and bad input: pdf 0 or a valid direction, never 
         CHECK(finite3(s.direction));
         CHECK(map.pdf(Vec3<T>(0, 0, 1)) == T(0));
         const Vec2<T> u = map.invert(Vec3<T>(0, 0, 1));
-        CHECK((apse::is_finite(u.x) && apse::is_finite(u.y)));
+        CHECK((apse::detail::is_finite(u.x) && apse::detail::is_finite(u.y)));
         CHECK(map.solid_angle() == T(0));
     });
     // bad u on a good ellipse; bad directions
@@ -294,7 +294,7 @@ TEMPLATE_TEST_CASE("degenerate and bad input: pdf 0 or a valid direction, never 
         for (const Vec3<T> w : {Vec3<T>(0), Vec3<T>(nan, 0, 1), Vec3<T>(inf, 0, 1), Vec3<T>(0, 0, -1), Vec3<T>(1, 0, 0)}) {
             const Vec2<T> u = map.invert(w);
             CHECK((u.x >= T(0) && u.x <= T(1) && u.y >= T(0) && u.y <= T(1)));
-            CHECK(apse::is_finite(map.pdf(w)));
+            CHECK(apse::detail::is_finite(map.pdf(w)));
         }
         CHECK(map.pdf(Vec3<T>(0, 0, 1)) == inv);
         CHECK(map.pdf(Vec3<T>(0, 0, -1)) == T(0));
@@ -313,7 +313,7 @@ TEMPLATE_TEST_CASE("degenerate and bad input: pdf 0 or a valid direction, never 
                         const int it = diag.iterations;
                         INFO(name << " tan alpha " << ta << " tan beta " << tb << " u " << i / 8.0 << " " << j / 8.0);
                         CHECK(finite3(s.direction));
-                        CHECK(apse::is_finite(s.pdf));
+                        CHECK(apse::detail::is_finite(s.pdf));
                         CHECK(s.pdf >= T(0));
                         CHECK(it <= 12);
                         if (s.pdf > 0) CHECK(std::fabs(glm::length(glm::dvec3(s.direction)) - 1) <= 1e-5);

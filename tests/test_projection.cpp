@@ -687,7 +687,7 @@ TEMPLATE_TEST_CASE("approaching the surface: Omega -> 2 pi, grazing the plane: O
         }
         REQUIRE_FALSE(e.empty());
         const T w = e.solid_angle();
-        CHECK(apse::is_finite(w));
+        CHECK(apse::detail::is_finite(w));
         CHECK(w >= prev * (T(1) - T(4) * apse::epsilon<T>()));
         CHECK(w <= apse::two_pi_v<T>);
         prev = w;
@@ -699,7 +699,7 @@ TEMPLATE_TEST_CASE("approaching the surface: Omega -> 2 pi, grazing the plane: O
         const T d = T(std::pow(10.0, -k));
         const auto e = apse::project_disk(vec3<T>(T(2), 0, d), c, n, T(1));
         const T w = e.solid_angle();
-        CHECK(apse::is_finite(w));
+        CHECK(apse::detail::is_finite(w));
         CHECK(w <= prev);
         prev = w;
     }
@@ -711,7 +711,7 @@ TEMPLATE_TEST_CASE("approaching the surface: Omega -> 2 pi, grazing the plane: O
         REQUIRE_FALSE(e.empty());
         check_frame(e);
         CHECK(e.beta() <= T(0.7854));  // beta -> pi/4 at the rim
-        CHECK(apse::is_finite(e.solid_angle()));
+        CHECK(apse::detail::is_finite(e.solid_angle()));
         CHECK(e.solid_angle() <= T(3.1416));  // the lune of half-width pi/4: Omega -> pi
     }
 }
@@ -727,7 +727,7 @@ TEMPLATE_TEST_CASE("degenerate and invalid input", "[projection][robustness]", f
     const vec3<T> o(T(0.2), T(0.1), T(1)), c(0, 0, 0), n(0, 0, 1), z(0);
     const auto finite_or_empty = [](const apse::SphericalEllipse<T>& e) {
         const T w = e.solid_angle();
-        CHECK(apse::is_finite(w));
+        CHECK(apse::detail::is_finite(w));
         CHECK(w >= T(0));
         CHECK(w <= apse::two_pi_v<T>);
         if (e.empty()) {
@@ -737,7 +737,7 @@ TEMPLATE_TEST_CASE("degenerate and invalid input", "[projection][robustness]", f
         const T f[] = {e.x.x, e.x.y, e.x.z, e.y.x, e.y.y, e.y.z, e.z.x, e.z.y, e.z.z, e.alpha(), e.beta(), e.tan_alpha,
                        e.tan_beta, e.sin_alpha, e.sin_beta, e.cos_alpha, e.cos_beta, e.one_minus_cos_alpha,
                        e.one_minus_cos_beta, e.m, e.one_minus_m};
-        for (T v : f) CHECK(apse::is_finite(v));
+        for (T v : f) CHECK(apse::detail::is_finite(v));
         (void)e.contains(e.z);
     };
     // must be empty

@@ -171,6 +171,26 @@ template <class S, class = void> struct has_solid_angle : std::false_type {};
 template <class S>
 struct has_solid_angle<S, std::void_t<decltype(std::declval<const S&>().solid_angle())>> : std::true_type {};
 
+// The maps' building blocks (local frame, cumulative areas, the inversion's pieces) are private,
+// reached by apse itself and its tests through apse::detail::MapAccess: no sampler exposes them.
+template <class S, class = void> struct exposes_local_coordinates : std::false_type {};
+template <class S>
+struct exposes_local_coordinates<S, std::void_t<decltype(std::declval<const S&>().local_coordinates(
+                                        std::declval<typename S::vec3>()))>> : std::true_type {};
+template <class S, class = void> struct exposes_areas : std::false_type {};
+template <class S>
+struct exposes_areas<S, std::void_t<decltype(std::declval<const S&>().areas())>> : std::true_type {};
+template <class S, class = void> struct exposes_kappa : std::false_type {};
+template <class S>
+struct exposes_kappa<S, std::void_t<decltype(std::declval<const S&>().kappa())>> : std::true_type {};
+template <class S, class T, class = void> struct exposes_quadrant_area : std::false_type {};
+template <class S, class T>
+struct exposes_quadrant_area<S, T, std::void_t<decltype(std::declval<const S&>().quadrant_area(T(0)))>>
+    : std::true_type {};
+template <class S, class T, class = void> struct exposes_half_area : std::false_type {};
+template <class S, class T>
+struct exposes_half_area<S, T, std::void_t<decltype(std::declval<const S&>().half_area(T(0)))>> : std::true_type {};
+
 /// The concept's static part for the sampler type S of the factory F in type T.
 template <class F, class T> constexpr bool static_checks() {
     using S = decltype(F::make(std::declval<const Scene<T>&>()));
@@ -200,6 +220,9 @@ template <class F, class T> constexpr bool static_checks() {
         static_assert(std::is_same<decltype(std::declval<const S&>().solid_angle()), T>::value, "solid_angle() -> T");
         static_assert(noexcept(std::declval<const S&>().solid_angle()), "solid_angle is noexcept");
     }
+    static_assert(!exposes_local_coordinates<S>::value && !exposes_areas<S>::value && !exposes_kappa<S>::value &&
+                      !exposes_quadrant_area<S, T>::value && !exposes_half_area<S, T>::value,
+                  "the maps' building blocks are not public (apse::detail::MapAccess)");
     // diagnostics: one free function for every sampler, the same result type as sample()
     static_assert(apse::counts_iterations_v<S> == F::counts, "the maps count their iterations, no other sampler");
     apse::SampleDiagnostics* diag = nullptr;
@@ -290,7 +313,7 @@ template <class F, class T> void check_normal() {
             CHECK(same.direction == smp.direction);
             CHECK(diag.iterations >= 0);
             CHECK(diag.iterations <= (F::counts ? apse::detail::max_area_iterations : 0));
-            CHECK(apse::is_finite(smp.pdf));
+            CHECK(apse::detail::is_finite(smp.pdf));
             CHECK(std::fabs(double(glm::length(smp.direction)) - 1) <= Budget<T>::on_light);
             if constexpr (std::is_base_of<apse::PointSample<T>, decltype(smp)>::value) {
                 // the point on the light: where point_on_plane puts it, at its distance along the direction
@@ -331,12 +354,12 @@ template <class F, class T> void check_degenerate(Degenerate d) {
         for (int j = 0; j < 7; ++j) {
             const auto smp = s.sample(grid_point<T>(i, j));
             CHECK(smp.pdf == T(0));
-            CHECK(apse::is_finite(smp.direction.x + smp.direction.y + smp.direction.z));
+            CHECK(apse::detail::is_finite(smp.direction.x + smp.direction.y + smp.direction.z));
             // pdf 0 everywhere, also towards where the light would be
             CHECK(s.pdf(glm::normalize(V3<T>(T(0.5), T(0.1 * i - 0.3), T(-1)))) == T(0));
             if constexpr (F::invertible) {
                 const V2<T> back = s.invert(glm::normalize(V3<T>(T(0.5), T(0.1 * j - 0.3), T(-1))));
-                CHECK(apse::is_finite(back.x + back.y));
+                CHECK(apse::detail::is_finite(back.x + back.y));
             }
         }
 }

@@ -271,7 +271,7 @@ TEMPLATE_TEST_CASE("tabulated: sample, pdf and invert agree, samples inside", "[
                     if (name == "tabulated") u.y = T(0.05) + T(0.95) * u.y;
                     const auto s = map.sample(u);
                     REQUIRE(s.pdf > 0);
-                    REQUIRE(apse::is_finite(double(s.pdf)));
+                    REQUIRE(apse::detail::is_finite(double(s.pdf)));
                     const double len = std::sqrt(double(glm::dot(s.direction, s.direction)));
                     CHECK(std::fabs(len - 1) < inside_tol);
                     // inside: gnomonic (x/(z tan a))^2 + (y/(z tan b))^2 <= 1 (+ rounding)
@@ -309,7 +309,7 @@ TEMPLATE_TEST_CASE("tabulated: degenerate input", "[tabulated][robust]", float, 
     const T nan = std::numeric_limits<T>::quiet_NaN(), inf = std::numeric_limits<T>::infinity();
     auto unit_and_finite = [](const Vec3<T>& d) {
         const double len = std::sqrt(double(glm::dot(d, d)));
-        return apse::is_finite(len) && std::fabs(len - 1) < 1e-5;
+        return apse::detail::is_finite(len) && std::fabs(len - 1) < 1e-5;
     };
     const auto good = arcs<T>(0.5, 0.5);
     const apse::TabulationView null_view{nullptr, 128, 17, 9};
@@ -325,8 +325,8 @@ TEMPLATE_TEST_CASE("tabulated: degenerate input", "[tabulated][robust]", float, 
             CHECK(unit_and_finite(s.direction));
             CHECK(map.pdf(Vec3<T>(0, 0, 1)) == 0);
             const Vec2<T> v = map.invert(Vec3<T>(0, 0, 1));
-            CHECK(apse::is_finite(double(v.x)));
-            CHECK(apse::is_finite(double(v.y)));
+            CHECK(apse::detail::is_finite(double(v.x)));
+            CHECK(apse::detail::is_finite(double(v.y)));
         });
     }
     for (const auto& view : {null_view, bad_dims}) {
@@ -350,15 +350,15 @@ TEMPLATE_TEST_CASE("tabulated: degenerate input", "[tabulated][robust]", float, 
                                  Vec2<T>(T(0.25), T(1)), Vec2<T>(T(0.5), T(0))}) {
             const auto s = map.sample(u);
             CHECK(s.pdf > 0);
-            CHECK(apse::is_finite(double(s.pdf)));
+            CHECK(apse::detail::is_finite(double(s.pdf)));
             CHECK(unit_and_finite(s.direction));
         }
         // directions: zero, NaN, infinite, behind, outside
         for (const Vec3<T>& d : {Vec3<T>(0), Vec3<T>(nan, 0, 1), Vec3<T>(inf, 0, 1), Vec3<T>(0, 0, -1), Vec3<T>(1, 0, 0)}) {
             CHECK(map.pdf(d) == 0);
             const Vec2<T> v = map.invert(d);
-            CHECK(apse::is_finite(double(v.x)));
-            CHECK(apse::is_finite(double(v.y)));
+            CHECK(apse::detail::is_finite(double(v.x)));
+            CHECK(apse::detail::is_finite(double(v.y)));
         }
     });
 }
@@ -381,7 +381,7 @@ TEMPLATE_TEST_CASE("tabulated: extreme sizes", "[tabulated][robust]", float, dou
                 for (int j = 0; j <= 4; ++j) {
                     const auto s = map.sample(Vec2<T>(T(i / 16.0), T(j / 4.0)));
                     INFO(name << " tan " << t[0] << " " << t[1] << " u " << i << " " << j);
-                    REQUIRE(apse::is_finite(double(s.pdf)));
+                    REQUIRE(apse::detail::is_finite(double(s.pdf)));
                     CHECK(std::fabs(double(s.pdf) * omega - 1) <= 0.01);
                     CHECK(std::fabs(std::sqrt(double(glm::dot(s.direction, s.direction))) - 1) < 1e-5);
                     CHECK(s.direction.z >= 0);

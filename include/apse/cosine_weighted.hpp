@@ -102,7 +102,7 @@ public:
         : mode_(Mode::empty), base_(Traits::base(map)) {
         if (!Traits::valid(base_)) return;
         const T scale = detail::max_abs3(normal);
-        if (!(scale > T(0)) || !is_finite(scale) || !detail::finite3(normal)) {
+        if (!(scale > T(0)) || !detail::is_finite(scale) || !detail::finite3(normal)) {
             mode_ = Mode::plain;
             return;
         }
@@ -154,7 +154,7 @@ public:
     APSE_FUNC vec2 invert(const vec3& d) const noexcept {
         if (mode_ == Mode::empty) return vec2(T(0));
         const vec2 v = mode_ == Mode::weighted ? psa_.invert(d) : base_.invert(d);
-        if (Traits::ld) return detail::concentric_from_disk(std::sqrt(clamp(v.y, T(0), T(1))), v.x);
+        if (Traits::ld) return detail::concentric_from_disk(std::sqrt(detail::clamp(v.y, T(0), T(1))), v.x);
         return v;
     }
 

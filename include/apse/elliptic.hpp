@@ -34,7 +34,7 @@ template <class T> using elliptic_work_t = T;
 /// Carlson domain: all >= 0 and finite, at most one of them zero.
 template <class T> APSE_FUNC bool carlson_args_ok(T x, T y, T z) noexcept {
     // (the maximum, not the sum, is tested: the sum of large finite arguments may overflow)
-    return x >= T(0) && y >= T(0) && z >= T(0) && is_finite(max_of(max_of(x, y), z)) &&
+    return x >= T(0) && y >= T(0) && z >= T(0) && detail::is_finite(detail::max_of(detail::max_of(x, y), z)) &&
            int(x == T(0)) + int(y == T(0)) + int(z == T(0)) <= 1;
 }
 
@@ -49,12 +49,12 @@ template <class T> APSE_FUNC T rd_impl(T x, T y, T z) noexcept {
 }
 
 template <class T> APSE_FUNC T rj_impl(T x, T y, T z, T p) noexcept {
-    if (!(carlson_args_ok(x, y, z) && p > T(0) && is_finite(p))) return quiet_nan<T>();
+    if (!(carlson_args_ok(x, y, z) && p > T(0) && detail::is_finite(p))) return quiet_nan<T>();
     return rj_core(x, y, z, p).rj;
 }
 
 template <class T> APSE_FUNC T rc_impl(T x, T y) noexcept {
-    if (!(x >= T(0) && y > T(0) && is_finite(max_of(x, y)))) return quiet_nan<T>();
+    if (!(x >= T(0) && y > T(0) && detail::is_finite(detail::max_of(x, y)))) return quiet_nan<T>();
     return rc_core(std::fabs(x), y);  // fabs: -0 counts as 0 (d / -0 would be -inf)
 }
 
@@ -82,7 +82,7 @@ template <class T> APSE_FUNC ReducedAmplitude<T> reduce_amplitude(T phi) noexcep
 }
 
 template <class T> APSE_FUNC T k_impl(T m) noexcept {
-    if (!(m < T(1)) || !is_finite(m)) return quiet_nan<T>();
+    if (!(m < T(1)) || !detail::is_finite(m)) return quiet_nan<T>();
     return rf_core(T(0), T(1) - m, T(1));
 }
 
@@ -126,12 +126,12 @@ template <class T> APSE_FUNC T comp_pi_valid(T n, T m) noexcept {
 }
 
 template <class T> APSE_FUNC T comp_pi_impl(T n, T m) noexcept {
-    if (!(m < T(1) && n < T(1)) || !is_finite(m) || !is_finite(n)) return quiet_nan<T>();
+    if (!(m < T(1) && n < T(1)) || !detail::is_finite(m) || !detail::is_finite(n)) return quiet_nan<T>();
     return comp_pi_valid(n, m);
 }
 
 template <class T> APSE_FUNC T f_impl(T phi, T m) noexcept {
-    if (!(m < T(1)) || !is_finite(m) || !is_finite(phi)) return quiet_nan<T>();
+    if (!(m < T(1)) || !detail::is_finite(m) || !detail::is_finite(phi)) return quiet_nan<T>();
     const ReducedAmplitude<T> a = reduce_amplitude(phi);
     const T c2 = a.c * a.c, s2 = a.s * a.s;
     // 1 - m sin^2 = cos^2 + (1 - m) sin^2: a sum of non-negative terms, exact-ish for m -> 1.
@@ -141,7 +141,7 @@ template <class T> APSE_FUNC T f_impl(T phi, T m) noexcept {
 }
 
 template <class T> APSE_FUNC T pi_impl(T n, T phi, T m) noexcept {
-    if (!(m < T(1) && n < T(1)) || !is_finite(m) || !is_finite(n) || !is_finite(phi))
+    if (!(m < T(1) && n < T(1)) || !detail::is_finite(m) || !detail::is_finite(n) || !detail::is_finite(phi))
         return quiet_nan<T>();
     const ReducedAmplitude<T> a = reduce_amplitude(phi);
     const T s = a.s, c = a.c, c2 = c * c, s2 = s * s, s3 = s * s2;

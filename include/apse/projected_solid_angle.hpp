@@ -152,7 +152,7 @@ template <class T> APSE_FUNC T psa_azimuth_fraction(T x, T y, T& sx, T& sy) noex
     const T len = hypot2(x, y);
     sx = x / len;
     sy = y / len;
-    return min_of(angle_of(sy, sx) * T(0.63661977236758134308), T(1));
+    return detail::min_of(angle_of(sy, sx) * T(0.63661977236758134308), T(1));
 }
 /// dphi/dt = psa_turn_jacobian q / R^2 (t in turns): 4 quadrants × pi/2.
 template <class T> APSE_FUNC constexpr T psa_turn_jacobian() noexcept { return two_pi_v<T>; }
@@ -187,7 +187,7 @@ public:
         : e_(e), empty_(true) {
         if (e.empty()) return;
         const T scale = detail::max_abs3(normal);
-        if (!(scale > T(0)) || !is_finite(scale)) return;
+        if (!(scale > T(0)) || !detail::is_finite(scale)) return;
         bool ok = true;
         n_ = e.to_local(detail::normalize_direction(normal / scale, ok));
         if (!ok) return;
@@ -203,7 +203,7 @@ public:
         k_ = std::sqrt(ia * ib);  // 1/sqrt(tan alpha tan beta)
         // the Lambert ratio sin(beta/2)/sin(alpha/2) = (sin beta/sin alpha) sqrt((1 + cos alpha)/(1 + cos beta))
         // (no product of small numbers; kept above sqrt(eps): any q > 0 is exact)
-        q_ = max_of(e.sin_beta / e.sin_alpha * std::sqrt((T(1) + e.cos_alpha) / (T(1) + e.cos_beta)), std::sqrt(epsilon<T>()));
+        q_ = detail::max_of(e.sin_beta / e.sin_alpha * std::sqrt((T(1) + e.cos_alpha) / (T(1) + e.cos_beta)), std::sqrt(epsilon<T>()));
         T z[Nodes + 1];
         if (n_.z > T(0)) {
             full_nodes(z);
@@ -214,12 +214,12 @@ public:
         // wherever a ray may be above the horizon; the ends of an arc are exactly where no ray is:
         // 0 there (the marginal vanishes like the distance to the end, or its square)
         T top = T(0);
-        for (int k = 0; k <= Nodes; ++k) top = max_of(top, z[k]);
-        const T floor = top > T(0) && is_finite(top) ? T(1e-3) * top : T(0);
+        for (int k = 0; k <= Nodes; ++k) top = detail::max_of(top, z[k]);
+        const T floor = top > T(0) && detail::is_finite(top) ? T(1e-3) * top : T(0);
         cdf_[0] = T(0);
         for (int k = 0; k <= Nodes; ++k) {
             const bool arc_end = width_ < T(1) && (k == 0 || k == Nodes);
-            node_[k] = !(floor > T(0)) ? T(1) : (arc_end ? T(0) : max_of(z[k], T(0)) + floor);  // no usable node: uniform
+            node_[k] = !(floor > T(0)) ? T(1) : (arc_end ? T(0) : detail::max_of(z[k], T(0)) + floor);  // no usable node: uniform
         }
         for (int k = 0; k < Nodes; ++k) cdf_[k + 1] = cdf_[k] + interval_mass(k, T(1)) / T(Nodes);
         inv_total_ = T(1) / cdf_[Nodes];
@@ -263,13 +263,13 @@ public:
         T x = std::sqrt(uc.y);
         for (int i = 0; i < 2; ++i) {
             const T slope = x * (T(2) * ma + T(3) * mb * x);
-            if (slope > T(0)) x = min_of(max_of(x - (x * x * (ma + mb * x) - target) / slope, T(0)), T(1));
+            if (slope > T(0)) x = detail::min_of(detail::max_of(x - (x * x * (ma + mb * x) - target) / slope, T(0)), T(1));
         }
         T sd = T(0), cd = T(1);
         // Halley's steps through the Newton root finder: with the derivative f' − f f''/(2 f')
         // its step is Halley's (cubic convergence), still safeguarded by the bracket
         auto eval = [&](T d, T& value, T& derivative) {
-            const detail::SinCosValues<T> v = detail::sin_cos_quarter_turn(min_of(d * T(0.63661977236758134308), T(1)));
+            const detail::SinCosValues<T> v = detail::sin_cos_quarter_turn(detail::min_of(d * T(0.63661977236758134308), T(1)));
             sd = v.s;
             cd = v.c;
             value = detail::psa_cdf(r, d, sd, cd) - target;
@@ -277,7 +277,7 @@ public:
             const T f2 = (r.a * (cd - sd) * (cd + sd) + T(2) * r.b * sd * cd) * r.k * r.k;
             derivative = f1 > T(0) ? f1 - value * f2 / (T(2) * f1) : f1;
         };
-        find_root_bracketed(eval, T(0), r.end, x * r.end, T(2) * epsilon<T>() * r.mass, 60);
+        detail::find_root_bracketed(eval, T(0), r.end, x * r.end, T(2) * epsilon<T>() * r.mass, 60);
         // sd, cd: the last point evaluated, which find_root_bracketed returns
         const T st = sd * r.cos0 + cd * r.sin0, ct = cd * r.cos0 - sd * r.sin0;
         const T c = r.kc > T(0) ? r.kc * sd : r.a * cd + r.b * sd;
@@ -311,12 +311,12 @@ public:
         node_interval(a.x, k, frac);
         const T u1 = (cdf_[k] + interval_mass(k, frac) / T(Nodes)) * inv_total_;
         const detail::PsaRay<T> r = ray(a);
-        if (!r.valid || !(r.mass > T(0))) return vec2(clamp(u1, T(0), T(1)), T(0));
+        if (!r.valid || !(r.mass > T(0))) return vec2(detail::clamp(u1, T(0), T(1)), T(0));
         const T rxy = detail::hypot2(l.x, l.y);
         // d = theta − theta_0 (sin, cos: the angle-difference formulas)
-        const T sd = max_of(rxy * r.cos0 - l.z * r.sin0, T(0)), cd = max_of(l.z * r.cos0 + rxy * r.sin0, T(0));
+        const T sd = detail::max_of(rxy * r.cos0 - l.z * r.sin0, T(0)), cd = detail::max_of(l.z * r.cos0 + rxy * r.sin0, T(0));
         const T u2 = detail::psa_cdf(r, detail::angle_of(sd, cd), sd, cd) / r.mass;
-        return vec2(clamp(u1, T(0), T(1)), clamp(u2, T(0), T(1)));
+        return vec2(detail::clamp(u1, T(0), T(1)), detail::clamp(u2, T(0), T(1)));
     }
 
 private:
@@ -345,7 +345,7 @@ private:
     APSE_FUNC T density(T m, const Azimuth& a, const detail::PsaRay<T>& r, T c) const noexcept {
         if (!(c > T(0))) return T(0);
         const T p = m * inv_total_ / (width_ * a.jacobian) * (c / r.mass * r.k) * r.k;
-        return is_finite(p) ? p : T(0);
+        return detail::is_finite(p) ? p : T(0);
     }
 
     /// The ray of an azimuth, its end angle to a few ulps (angle_of) and its mass.
@@ -394,15 +394,15 @@ private:
         T t = detail::unfold_quadrant_fraction(detail::quadrant_of(cp, sp), f) - t0_;
         if (t < T(0)) t += T(1);
         const T pos = width_ < T(1) ? t / width_ : t;
-        return {clamp(pos, T(0), T(1)), cp, sp, detail::psa_turn_jacobian<T>() * q_ / (sx * sx + q_ * q_ * sy * sy)};
+        return {detail::clamp(pos, T(0), T(1)), cp, sp, detail::psa_turn_jacobian<T>() * q_ / (sx * sx + q_ * q_ * sy * sy)};
     }
 
     /// The node interval k and the position in it of x in [0, 1].
     APSE_FUNC void node_interval(T x, int& k, T& frac) const noexcept {
-        const T y = clamp(x, T(0), T(1)) * T(Nodes);
+        const T y = detail::clamp(x, T(0), T(1)) * T(Nodes);
         k = y > T(0) ? int(y) : 0;
         if (k > Nodes - 1) k = Nodes - 1;
-        frac = clamp(y - T(k), T(0), T(1));
+        frac = detail::clamp(y - T(k), T(0), T(1));
     }
 
     /// The piecewise-linear marginal at x.
@@ -468,7 +468,7 @@ private:
     APSE_FUNC bool arc_nodes(T lx, T ly, T (&z)[Nodes + 1]) noexcept {
         const T len = detail::hypot2(lx, ly);
         const T cn = lx / len, sn = ly / len;  // tau_n
-        const T cg = clamp(-n_.z * e_.cos_alpha * e_.cos_beta / len, T(0), T(1)), sg = std::sqrt((T(1) - cg) * (T(1) + cg));
+        const T cg = detail::clamp(-n_.z * e_.cos_alpha * e_.cos_beta / len, T(0), T(1)), sg = std::sqrt((T(1) - cg) * (T(1) + cg));
         // the two crossings' gnomonic directions (their scale does not matter)
         const T c_lo = cn * cg + sn * sg, s_lo = sn * cg - cn * sg;  // tau_n − gamma
         const T c_hi = cn * cg - sn * sg, s_hi = sn * cg + cn * sg;  // tau_n + gamma

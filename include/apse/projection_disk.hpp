@@ -53,7 +53,7 @@ APSE_FUNC SphericalEllipse<T> project_disk(const glm::vec<3, T>& o, const glm::v
     const vec3 w0 = center - o;
     const T w_max = detail::max_abs3(w0);
     const T n2 = glm::dot(normal, normal);
-    if (!(radius > T(0)) || !is_finite(radius + w_max + n2)) return E::make_empty();
+    if (!(radius > T(0)) || !detail::is_finite(radius + w_max + n2)) return E::make_empty();
     // The normal N and 1/|N|, 1/|N|^2 (directly when |N|^2 is a normal number, else rescaled).
     vec3 nv = normal;
     T nn2 = n2;
@@ -65,7 +65,7 @@ APSE_FUNC SphericalEllipse<T> project_disk(const glm::vec<3, T>& o, const glm::v
     const T inv_n2 = T(1) / nn2, inv_n = std::sqrt(nn2) * inv_n2;
     // Exact power-of-two rescaling (only when the scene's scale is extreme): max(|w|_inf, r) in
     // [1/2, 1) then, so no product of up to six lengths below can overflow or underflow.
-    const T s_max = max_of(w_max, radius);
+    const T s_max = detail::max_of(w_max, radius);
     vec3 w = w0;
     T r = radius;
     if (!(s_max >= detail::safe_scale_min<T>() && s_max <= detail::safe_scale_max<T>())) {
@@ -92,7 +92,7 @@ APSE_FUNC SphericalEllipse<T> project_disk(const glm::vec<3, T>& o, const glm::v
     const vec3 zd = wn > T(0) ? n : -n;  // from o towards the plane
     // An offset below the rounding noise of w (or so small that v / h would not be accurate) is
     // the axis: alpha − beta = O(h²) is far below an ulp there, and any frame is exact.
-    const T h_min = max_of(T(8) * epsilon<T>() * detail::max_abs3(w), detail::tan_min<T>() * max_of(detail::max_abs3(w), r));
+    const T h_min = detail::max_of(T(8) * epsilon<T>() * detail::max_abs3(w), detail::tan_min<T>() * detail::max_of(detail::max_abs3(w), r));
     const bool on_axis = !(h2 > h_min * h_min);
     if (on_axis) h2 = T(0);
     const T h = std::sqrt(h2);
@@ -124,7 +124,7 @@ APSE_FUNC SphericalEllipse<T> project_disk(const glm::vec<3, T>& o, const glm::v
         sin_c = T(2) * d * h;
         cos_c = T(2) * d * d + big_d;
     }
-    tan_beta = min_of(tan_beta, tan_alpha);
+    tan_beta = detail::min_of(tan_beta, tan_alpha);
     const vec3 yd = on_axis ? detail::any_perpendicular(zd) : v * (T(1) / hv);
     const vec3 xd = glm::cross(yd, zd);
     // Every other field in closed form from lambda, without going through the tangents (shorter
@@ -166,7 +166,7 @@ APSE_FUNC SphericalEllipse<T> project_disk(const glm::vec<3, T>& o, const glm::v
         return e;
     }
     // The centre's polar angle, normalised by rescaling (its norm² may underflow here).
-    const T cs_max = max_of(sin_c, cos_c);
+    const T cs_max = detail::max_of(sin_c, cos_c);
     sin_c /= cs_max;
     cos_c /= cs_max;
     const T inv_norm = T(1) / std::sqrt(sin_c * sin_c + cos_c * cos_c);

@@ -77,7 +77,7 @@ APSE_FUNC SphericalEllipse<T> ellipse_of_cone(const Sym3<T>& c, const Sym3<T>& c
     const int ia = (ineg + 1) % 3, ib = (ineg + 2) % 3;
     const int i1 = lam[ia] >= lam[ib] ? ia : ib, i2 = i1 == ia ? ib : ia;
     const T l1 = lam[i1], l2 = lam[i2], l3 = lam[ineg];
-    if (!(l3 < T(0) && l2 > T(0) && is_finite(l1 - l3))) return E::make_empty();
+    if (!(l3 < T(0) && l2 > T(0) && detail::is_finite(l1 - l3))) return E::make_empty();
     const T tan_alpha = std::sqrt(-l3 / l2), tan_beta = std::sqrt(-l3 / l1);
     vec3 z = vec[ineg];
     if (glm::dot(z, toward) < T(0)) z = -z;
@@ -85,7 +85,7 @@ APSE_FUNC SphericalEllipse<T> ellipse_of_cone(const Sym3<T>& c, const Sym3<T>& c
     x = robust_normalize(x - glm::dot(x, z) * z);
     const vec3 y = glm::cross(z, x);
     const auto world = [&](const vec3& l) { return l.x * basis[0] + l.y * basis[1] + l.z * basis[2]; };
-    return E::from_tangents(world(x), world(y), world(z), tan_alpha, min_of(tan_beta, tan_alpha));
+    return E::from_tangents(world(x), world(y), world(z), tan_alpha, detail::min_of(tan_beta, tan_alpha));
 }
 
 }  // namespace detail
@@ -120,7 +120,7 @@ APSE_FUNC SphericalEllipse<T> project_ellipse(const glm::vec<3, T>& o, const glm
     const vec3 p0 = center - o;
     if (!detail::finite3(p0) || !detail::finite3(semi_axis_u) || !detail::finite3(semi_axis_v))
         return E::make_empty();
-    const T s_max = max_of(detail::max_abs3(p0), max_of(detail::max_abs3(semi_axis_u), detail::max_abs3(semi_axis_v)));
+    const T s_max = detail::max_of(detail::max_abs3(p0), detail::max_of(detail::max_abs3(semi_axis_u), detail::max_abs3(semi_axis_v)));
     if (!(s_max > T(0))) return E::make_empty();
     const detail::Pow2Scale<T> sc = detail::pow2_scale_for(s_max);
     const vec3 p = sc(p0), u = sc(semi_axis_u), v = sc(semi_axis_v);
@@ -151,8 +151,8 @@ APSE_FUNC SphericalEllipse<T> project_ellipse(const glm::vec<3, T>& o, const glm
                  {T(0), T(0), det}};
     T b_max = T(0);
     for (int i = 0; i < 3; ++i)
-        for (int j = 0; j < 3; ++j) b_max = max_of(b_max, std::fabs(b[i][j]));
-    if (!(b_max > T(0)) || !is_finite(b_max)) return E::make_empty();
+        for (int j = 0; j < 3; ++j) b_max = detail::max_of(b_max, std::fabs(b[i][j]));
+    if (!(b_max > T(0)) || !detail::is_finite(b_max)) return E::make_empty();
     const detail::Pow2Scale<T> bs = detail::pow2_scale_for(b_max);  // B -> 2^-e B (exact)
     for (int i = 0; i < 3; ++i)
         for (int j = 0; j < 3; ++j) b[i][j] = bs(b[i][j]);
@@ -182,8 +182,8 @@ APSE_FUNC SphericalEllipse<T> project_sphere(const glm::vec<3, T>& o, const glm:
     using E = SphericalEllipse<T>;
     const vec3 p0 = center - o;
     const T p_max = detail::max_abs3(p0);
-    if (!(radius > T(0)) || !is_finite(radius + p_max) || !detail::finite3(p0)) return E::make_empty();
-    const detail::Pow2Scale<T> sc = detail::pow2_scale_for(max_of(p_max, radius));
+    if (!(radius > T(0)) || !detail::is_finite(radius + p_max) || !detail::finite3(p0)) return E::make_empty();
+    const detail::Pow2Scale<T> sc = detail::pow2_scale_for(detail::max_of(p_max, radius));
     const vec3 p = sc(p0);
     const T r = sc(radius);
     const T dist = std::sqrt(glm::dot(p, p));
@@ -216,8 +216,8 @@ APSE_FUNC SphericalEllipse<T> project_ellipsoid(const glm::vec<3, T>& o, const g
     const vec3 q0 = o - center;
     if (!detail::finite3(q0) || !detail::finite3(axis1) || !detail::finite3(axis2) || !detail::finite3(axis3))
         return E::make_empty();
-    const T s_max = max_of(max_of(detail::max_abs3(q0), detail::max_abs3(axis1)),
-                           max_of(detail::max_abs3(axis2), detail::max_abs3(axis3)));
+    const T s_max = detail::max_of(detail::max_of(detail::max_abs3(q0), detail::max_abs3(axis1)),
+                           detail::max_of(detail::max_abs3(axis2), detail::max_abs3(axis3)));
     if (!(s_max > T(0))) return E::make_empty();
     const detail::Pow2Scale<T> sc = detail::pow2_scale_for(s_max);
     const vec3 q = sc(q0), A1 = sc(axis1), A2 = sc(axis2), A3 = sc(axis3);
@@ -244,26 +244,26 @@ APSE_FUNC SphericalEllipse<T> project_ellipsoid(const glm::vec<3, T>& o, const g
     const vec3 qh1 = qs / qs_max;
     const T qn1 = std::sqrt(glm::dot(qh1, qh1));
     const T qn = qs_max * qn1;  // |q'|
-    if (!(qn > T(1)) || !is_finite(qn)) return E::make_empty();
+    if (!(qn > T(1)) || !detail::is_finite(qn)) return E::make_empty();
     const vec3 qh = qh1 / qn1;
     const T kappa = (qn - T(1)) * (qn + T(1)) / (qn * qn);  // 1 − 1/|q'|²
     // C ∝ G (kappa I − qh qhᵀ) G with G = diag(a_min / a_i): det C = −(g1 g2 g3 kappa / |q'|)².
     // Its inverse: (kappa I − qh qhᵀ)⁻¹ = (I − |q'|² qh qhᵀ) / kappa, so C⁻¹ = Cinv / (kappa rho) with
     // Cinv = diag(a_i / a_max)² − (q / a_max)(q / a_max)ᵀ (the dual cone), rho = (a_min / a_max)².
-    const T a_min = min_of(a1, min_of(a2, a3)), a_max = max_of(a1, max_of(a2, a3));
+    const T a_min = detail::min_of(a1, detail::min_of(a2, a3)), a_max = detail::max_of(a1, detail::max_of(a2, a3));
     const vec3 qd(glm::dot(q, e1), glm::dot(q, e2), glm::dot(q, e3));
     if (!(a_max >= detail::tan_min<T>() * detail::max_abs3(qd))) return E::make_empty();  // tan beta < tan_min
     const vec3 g(a_min / a1, a_min / a2, a_min / a3);
     // kappa − qh_i² is written (sum of the other qh_j²) − 1/|q'|²: no cancellation of two terms
     // near 1 when o is far from the ellipsoid along one of its (thin) axes.
-    const T inv_q2 = sqr(T(1) / qn);
+    const T inv_q2 = detail::sqr(T(1) / qn);
     const vec3 qh2(qh.x * qh.x, qh.y * qh.y, qh.z * qh.z);
     const vec3 diag(qh2.y + qh2.z - inv_q2, qh2.x + qh2.z - inv_q2, qh2.x + qh2.y - inv_q2);
     const auto c = [&](int i, int j) { return g[i] * g[j] * (i == j ? diag[i] : -qh[i] * qh[j]); };
     const vec3 h(a1 / a_max, a2 / a_max, a3 / a_max);
     const vec3 qa = qd / a_max;
     const auto ci = [&](int i, int j) { return (i == j ? h[i] * h[i] : T(0)) - qa[i] * qa[j]; };
-    const T rho = sqr(a_min / a_max);
+    const T rho = detail::sqr(a_min / a_max);
     const T det_b = g.x * g.y * g.z * kappa / qn;
     const vec3 basis[3] = {e1, e2, e3};
     return detail::ellipse_of_cone(detail::Sym3<T>{c(0, 0), c(0, 1), c(0, 2), c(1, 1), c(1, 2), c(2, 2)},

@@ -49,9 +49,9 @@ APSE_FUNC PointSample<T> point_on_plane(const DirectionSample<T>& sample, const 
     PointSample<T> r{{sample.direction, T(0)}, o, T(0)};
     if (!(sample.pdf > T(0))) return r;
     const T t = glm::dot(plane_point - o, plane_normal) / glm::dot(sample.direction, plane_normal);
-    if (!(t > T(0)) || !is_finite(t)) return r;
+    if (!(t > T(0)) || !detail::is_finite(t)) return r;
     const glm::vec<3, T> p = o + t * sample.direction;
-    if (!is_finite(p.x + p.y + p.z)) return r;  // beyond T's range
+    if (!detail::is_finite(p.x + p.y + p.z)) return r;  // beyond T's range
     r.point = p;
     r.distance = t;
     r.pdf = sample.pdf;

@@ -118,7 +118,7 @@ template <class T> struct SphericalEllipse {
                                                    T tan_alpha, T tan_beta) noexcept {
         if (!(tan_alpha >= T(0) && tan_beta >= T(0))) return make_empty();
         const T frame_sum = (x.x + x.y + x.z) + (y.x + y.y + y.z) + (z.x + z.y + z.z);
-        if (!is_finite(frame_sum)) return make_empty();
+        if (!detail::is_finite(frame_sum)) return make_empty();
         SphericalEllipse e;
         if (tan_beta > tan_alpha) {
             e.x = y;
@@ -132,7 +132,7 @@ template <class T> struct SphericalEllipse {
         }
         e.z = z;
         const T cap = detail::tan_cap<T>();
-        const T ta = min_of(tan_alpha, cap), tb = min_of(tan_beta, cap);
+        const T ta = detail::min_of(tan_alpha, cap), tb = detail::min_of(tan_beta, cap);
         if (!(tb >= detail::tan_min<T>())) return make_empty();
         e.tan_alpha = ta;
         e.tan_beta = tb;
@@ -188,7 +188,7 @@ template <class T> struct SphericalEllipse {
         if (empty()) return T(0);
         const T ca = cos_alpha, cb = cos_beta;  // cb >= ca >= 2^-55 (double), 2^-26 (float)
         const T rj_q = detail::cel_core<T, false>(cb, ca, ca * cb).rj;
-        return min_of(T(4) / T(3) * (sin_alpha * ca) * (sin_beta * cb) * rj_q, two_pi_v<T>);  // may round past 2 pi
+        return detail::min_of(T(4) / T(3) * (sin_alpha * ca) * (sin_beta * cb) * rj_q, two_pi_v<T>);  // may round past 2 pi
     }
 
     /// World → ellipse frame: (dot(w, x), dot(w, y), dot(w, z)). Any vector, any length.

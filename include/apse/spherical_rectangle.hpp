@@ -206,7 +206,7 @@ public:
     /// (0,0,1), point o, st (0,0), distance 0.
     APSE_FUNC RectanglePoint<T> sample_point(const vec2& u) const noexcept {
         if (empty()) return none();
-        const T u1 = clamp(u.x, T(0), T(1)), u2 = clamp(u.y, T(0), T(1));
+        const T u1 = detail::clamp(u.x, T(0), T(1)), u2 = detail::clamp(u.y, T(0), T(1));
         const T t = column(u1);
         // Position along the column x = x0 + t: uniform in h = y / sqrt(q2 + y²).
         const T x = x0_ + t, y1 = y0_ + h_;
@@ -231,7 +231,7 @@ public:
         } else {
             s = hv * q / cv - y0_;  // opposite signs: no cancellation
         }
-        s = u2 < T(1) ? clamp(s, T(0), h_) : h_;
+        s = u2 < T(1) ? detail::clamp(s, T(0), h_) : h_;
         return make_point(t, s, inv_solid_angle_);
     }
 
@@ -255,7 +255,7 @@ public:
         RectanglePoint<T> r = none();
         const vec3 dir = detail::robust_normalize(direction);
         if (glm::dot(dir, dir) > T(0)) r.direction = dir;
-        r.st = plane ? vec2(clamp(t / w_, T(-1), T(2)), clamp(s / h_, T(-1), T(2))) : vec2(T(-1), T(-1));
+        r.st = plane ? vec2(detail::clamp(t / w_, T(-1), T(2)), detail::clamp(s / h_, T(-1), T(2))) : vec2(T(-1), T(-1));
         return r;
     }
 
@@ -274,17 +274,17 @@ public:
     APSE_FUNC vec2 invert(const vec3& direction) const noexcept {
         T t, s;
         if (!hit_plane(direction, t, s)) return vec2(T(0), T(0));
-        t = clamp(t, T(0), w_);
-        s = clamp(s, T(0), h_);
+        t = detail::clamp(t, T(0), w_);
+        s = detail::clamp(s, T(0), h_);
         T lb, lc;
-        const T u1 = clamp(strip_solid_angle(t, lb, lc) * inv_solid_angle_, T(0), T(1));
+        const T u1 = detail::clamp(strip_solid_angle(t, lb, lc) * inv_solid_angle_, T(0), T(1));
         const T x = x0_ + t, y1 = y0_ + h_, y = y0_ + s;
         const T q2 = x * x + d_ * d_;
         const T l0 = std::sqrt(q2 + y0_ * y0_), l1 = std::sqrt(q2 + y1 * y1);
         const T ly = std::sqrt(q2 + y * y);
         const T num = detail::sine_difference(y0_, y, s, l0, ly, q2);
         const T den = detail::sine_difference(y0_, y1, h_, l0, l1, q2);
-        const T u2 = den > T(0) ? clamp(num / den, T(0), T(1)) : T(0);
+        const T u2 = den > T(0) ? detail::clamp(num / den, T(0), T(1)) : T(0);
         return vec2(u1, u2);
     }
 
@@ -333,8 +333,8 @@ private:
             z0 = -z0;
         }
         const T d = -z0;
-        const T big = max_of(max_of(std::fabs(x0) + w, std::fabs(y0) + h), d);
-        if (!(w > T(0) && h > T(0) && d > T(0) && is_finite(big) && detail::finite3(o) && detail::finite3(base)))
+        const T big = detail::max_of(detail::max_of(std::fabs(x0) + w, std::fabs(y0) + h), d);
+        if (!(w > T(0) && h > T(0) && d > T(0) && detail::is_finite(big) && detail::finite3(o) && detail::finite3(base)))
             return;  // stays empty
         const detail::Pow2Scale<T> scale = detail::pow2_scale_for(big);
         const T unscale = scale.factor != T(0) ? T(1) / scale.factor : std::ldexp(T(1), scale.e);
@@ -343,10 +343,10 @@ private:
         w_ = scale(w);
         h_ = scale(h);
         d_ = scale(d);
-        if (!(w_ > T(0) && h_ > T(0) && d_ > T(0)) || !is_finite(unscale)) return;
+        if (!(w_ > T(0) && h_ > T(0) && d_ > T(0)) || !detail::is_finite(unscale)) return;
         const T y1 = y0_ + h_, d2 = d_ * d_;
         const T S = detail::rectangle_solid_angle(x0_, w_, y0_, h_, d_);
-        if (!(S > T(0)) || !is_finite(T(1) / S)) return;
+        if (!(S > T(0)) || !detail::is_finite(T(1) / S)) return;
         base_ = base;
         delta_ = delta;
         xh_ = xh;
@@ -361,7 +361,7 @@ private:
         b1_ = y1 / std::sqrt(d2 + y1 * y1);
         // phi0 = phi(c0) at the left edge, kept as (sin, cos) by the addition theorem
         const T c0 = x0_ / std::sqrt(x0_ * x0_ + d2);
-        const T k0 = safe_sqrt(T(1) - sqr(b0_ * c0)), k1 = safe_sqrt(T(1) - sqr(b1_ * c0));
+        const T k0 = detail::safe_sqrt(T(1) - detail::sqr(b0_ * c0)), k1 = detail::safe_sqrt(T(1) - detail::sqr(b1_ * c0));
         sin_phi0_ = c0 * (b0_ * k1 + b1_ * k0);
         cos_phi0_ = k0 * k1 - b0_ * b1_ * c0 * c0;
     }
@@ -385,8 +385,8 @@ private:
         const T st = std::sin(target), ct = std::cos(target);
         const T sin_phi = sin_phi0_ * ct + cos_phi0_ * st, cos_phi = cos_phi0_ * ct - sin_phi0_ * st;
         const T den2 = b0_ * b0_ + b1_ * b1_ + T(2) * b0_ * b1_ * cos_phi;
-        const T c = den2 > T(0) ? clamp(sin_phi / std::sqrt(den2), T(-1), T(1)) : T(0);
-        const T guess = c * d_ / safe_sqrt(T(1) - c * c) - x0_;  // inf/NaN: clamped by the solver
+        const T c = den2 > T(0) ? detail::clamp(sin_phi / std::sqrt(den2), T(-1), T(1)) : T(0);
+        const T guess = c * d_ / detail::safe_sqrt(T(1) - c * c) - x0_;  // inf/NaN: clamped by the solver
         // Polish: bracketed Newton on the cancellation-free left-part solid angle; its derivative
         // is the column's solid-angle density d (h1 - h0) / (x² + d²).
         const T y1 = y0_ + h_;
@@ -401,7 +401,7 @@ private:
             if (std::fabs(value) <= derivative * epsilon<T>() * t) value = T(0);
         };
         const T tolerance = T(4) * epsilon<T>() * solid_angle_;
-        return find_root_bracketed(eval, T(0), w_, guess, tolerance, 12).x;
+        return detail::find_root_bracketed(eval, T(0), w_, guess, tolerance, 12).x;
     }
 
     // Ray from o along `direction` against the plane: offsets (t, s) of the hit point from the
@@ -414,7 +414,7 @@ private:
         const T lam = d_ / -dz;
         t = lam * glm::dot(direction, xh_) - x0_;
         s = lam * glm::dot(direction, yh_) - y0_;
-        return is_finite(t) && is_finite(s);
+        return detail::is_finite(t) && detail::is_finite(s);
     }
 
     // The result for offsets (t, s) from the corner (scaled units).
@@ -428,7 +428,7 @@ private:
         // No sample (pdf 0) when v = 0 after rounding (a point next to o on a rectangle ~1e16
         // (double) or ~1e7 (float) times larger than o's distance to it, where v cancels) or when
         // the point or its distance is beyond the type's range (coordinates near its maximum)
-        const bool usable = r.distance > T(0) && is_finite(r.distance) && detail::finite3(r.point);
+        const bool usable = r.distance > T(0) && detail::is_finite(r.distance) && detail::finite3(r.point);
         if (!(r.distance > T(0))) r.direction = vec3(T(0), T(0), T(1));
         r.pdf = usable ? pdf : T(0);
         r.st = vec2(t / w_, s / h_);

@@ -55,7 +55,7 @@ inline double unit(FuzzedDataProvider& in) {
 }
 
 template <class V> bool finite3(const V& v) {
-    return apse::is_finite(v.x) && apse::is_finite(v.y) && apse::is_finite(v.z);
+    return apse::detail::is_finite(v.x) && apse::detail::is_finite(v.y) && apse::detail::is_finite(v.z);
 }
 
 }  // namespace apse_fuzz

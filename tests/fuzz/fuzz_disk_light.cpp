@@ -43,13 +43,13 @@ template <class T> void check(const double* g, apse::DiskMap map, bool cosine, T
                                             : apse::DiskLight<T>(o, c, n, r, map, table);
     const apse::DiskLightSample<T> s = light.sample(glm::vec<2, T>(u1, u2));
     if (!finite3(s.direction)) fail("non-finite direction");
-    if (!apse::is_finite(s.pdf) || !(s.pdf >= T(0))) fail("pdf not finite and >= 0");
+    if (!apse::detail::is_finite(s.pdf) || !(s.pdf >= T(0))) fail("pdf not finite and >= 0");
     const T omega = light.solid_angle();
-    if (!apse::is_finite(omega) || !(omega >= T(0)) || omega > T(6.2832)) fail("solid angle out of [0, 2 pi]");
+    if (!apse::detail::is_finite(omega) || !(omega >= T(0)) || omega > T(6.2832)) fail("solid angle out of [0, 2 pi]");
     if (!(s.pdf > T(0))) return;
     const double len = glm::length(glm::dvec3(s.direction));
     if (std::fabs(len - 1) > 64 * double(apse::epsilon<T>())) fail("direction not unit");
-    if (!finite3(s.point) || !apse::is_finite(s.distance) || !(s.distance > T(0))) fail("bad point / distance");
+    if (!finite3(s.point) || !apse::detail::is_finite(s.distance) || !(s.distance > T(0))) fail("bad point / distance");
     // inside the ellipse up to rounding: shrink |x|, |y| and grow z by d = 64 eps (the frame's and
     // the local direction's rounding, absolute for unit vectors)
     const apse::SphericalEllipse<T>& e = light.ellipse();
@@ -63,12 +63,12 @@ template <class T> void check(const double* g, apse::DiskMap map, bool cosine, T
     const glm::vec<2, T> back = light.invert(s.direction);
     if (!(back.x >= T(0) && back.x <= T(1) && back.y >= T(0) && back.y <= T(1))) fail("inverse outside the square");
     const T p1 = light.pdf(s.direction), p2 = apse::disk_light_pdf(o, c, n, r, s.direction);
-    if (!apse::is_finite(p1) || !(p1 >= T(0)) || !apse::is_finite(p2) || !(p2 >= T(0))) fail("bad MIS pdf");
+    if (!apse::detail::is_finite(p1) || !(p1 >= T(0)) || !apse::detail::is_finite(p2) || !(p2 >= T(0))) fail("bad MIS pdf");
     const T p3 = cosine ? apse::disk_light_pdf(o, c, n, r, map, table, receiver, s.direction)
                         : apse::disk_light_pdf(o, c, n, r, map, table, s.direction);
     // the same computation at another call site: equal, up to the rounding FMA contraction may
     // change (a tabulated bin edge: < 2 %)
-    if (!apse::is_finite(p3) || !(p3 >= T(0))) fail("bad stateless MIS pdf");
+    if (!apse::detail::is_finite(p3) || !(p3 >= T(0))) fail("bad stateless MIS pdf");
     if (p3 > T(0) && p1 > T(0) && std::fabs(double(p3) / double(p1) - 1) > 0.02) fail("stateless pdf differs from the light's");
 }
 

@@ -19,16 +19,16 @@ int g_which = 0;
     apse_fuzz::fail("fuzz_elliptic", what, g_in, 4);
 }
 
-template <class T> bool fin(T v) { return apse::is_finite(v); }
+template <class T> bool fin(T v) { return apse::detail::is_finite(v); }
 
 /// The contract: in the domain, not NaN and sign-consistent (sign: +1, or -1 for a negative phi;
 /// 0 means "any sign", e.g. for phi = 0); outside it, NaN.
 template <class T> void expect(bool in_domain, T r, int sign) {
     if (!in_domain) {
-        if (!apse::is_nan(r)) fail("outside the domain, not NaN");
+        if (!apse::detail::is_nan(r)) fail("outside the domain, not NaN");
         return;
     }
-    if (apse::is_nan(r)) fail("inside the domain, NaN");
+    if (apse::detail::is_nan(r)) fail("inside the domain, NaN");
     if (sign > 0 && !(r >= T(0))) fail("negative result");
     if (sign < 0 && !(r <= T(0))) fail("positive result for negative phi");
 }

@@ -22,24 +22,24 @@ template <class T> void check(bool centred) {
     const apse::SphericalRectangle<T> rect =
         centred ? apse::SphericalRectangle<T>::from_center(o, c, ex, ey) : apse::SphericalRectangle<T>(o, c, ex, ey);
     const T omega = rect.solid_angle();
-    if (!apse::is_finite(omega) || !(omega >= T(0)) || omega > T(6.2832)) fail("solid angle out of [0, 2 pi]");
+    if (!apse::detail::is_finite(omega) || !(omega >= T(0)) || omega > T(6.2832)) fail("solid angle out of [0, 2 pi]");
     const glm::vec<2, T> u{T(g_in[12]), T(g_in[13])};
     const auto p = rect.sample_point(u);
     if (!apse_fuzz::finite3(p.direction)) fail("non-finite direction");
-    if (!apse::is_finite(p.pdf) || !(p.pdf >= T(0))) fail("pdf not finite and >= 0");
+    if (!apse::detail::is_finite(p.pdf) || !(p.pdf >= T(0))) fail("pdf not finite and >= 0");
     const auto s = rect.sample(u);
-    if (!apse_fuzz::finite3(s.direction) || !apse::is_finite(s.pdf) || !(s.pdf >= T(0))) fail("bad sample()");
+    if (!apse_fuzz::finite3(s.direction) || !apse::detail::is_finite(s.pdf) || !(s.pdf >= T(0))) fail("bad sample()");
     if (!(p.pdf > T(0))) return;
     if (std::fabs(glm::length(glm::dvec3(p.direction)) - 1) > 64 * double(apse::epsilon<T>())) fail("direction not unit");
-    if (!apse_fuzz::finite3(p.point) || !apse::is_finite(p.distance) || !(p.distance > T(0))) fail("bad point / distance");
+    if (!apse_fuzz::finite3(p.point) || !apse::detail::is_finite(p.distance) || !(p.distance > T(0))) fail("bad point / distance");
     const T slack = T(1e-3);  // coordinates are ratios of rounded lengths: generous, still catches escapes
     if (!(p.st.x >= -slack && p.st.x <= 1 + slack && p.st.y >= -slack && p.st.y <= 1 + slack)) fail("point off the rectangle");
     const auto back = rect.invert(p.direction);
     if (!(back.x >= T(0) && back.x <= T(1) && back.y >= T(0) && back.y <= T(1))) fail("inverse outside the square");
     const T q = rect.pdf(p.direction);
-    if (!apse::is_finite(q) || !(q >= T(0))) fail("bad MIS pdf");
+    if (!apse::detail::is_finite(q) || !(q >= T(0))) fail("bad MIS pdf");
     const auto l = rect.locate(p.direction);
-    if (!apse::is_finite(l.pdf) || !(l.pdf >= T(0))) fail("bad locate pdf");
+    if (!apse::detail::is_finite(l.pdf) || !(l.pdf >= T(0))) fail("bad locate pdf");
 }
 
 }  // namespace
@@ -51,7 +51,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     if (in.ConsumeBool()) {  // often a true rectangle: edge_y made orthogonal to edge_x
         const glm::dvec3 ex(g_in[6], g_in[7], g_in[8]), ey(g_in[9], g_in[10], g_in[11]);
         const double xx = glm::dot(ex, ex);
-        if (xx > 0 && apse::is_finite(xx)) {
+        if (xx > 0 && apse::detail::is_finite(xx)) {
             const glm::dvec3 o = ey - ex * (glm::dot(ex, ey) / xx);
             for (int i = 0; i < 3; ++i) g_in[9 + i] = o[i];
         }

@@ -33,7 +33,7 @@ bool g_cosine = false;
 template <class T, class Map> void check_sampler(const Map& map, const apse::SphericalEllipse<T>& e, T u1, T u2) {
     const auto s = map.sample(glm::vec<2, T>(u1, u2));
     if (!apse_fuzz::finite3(s.direction)) fail("non-finite direction");
-    if (!apse::is_finite(s.pdf) || !(s.pdf >= T(0))) fail("pdf not finite and >= 0");
+    if (!apse::detail::is_finite(s.pdf) || !(s.pdf >= T(0))) fail("pdf not finite and >= 0");
     if (!(s.pdf > T(0))) return;
     const double len = glm::length(glm::dvec3(s.direction));
     if (std::fabs(len - 1) > 64 * double(apse::epsilon<T>())) fail("direction not unit");
@@ -51,7 +51,7 @@ template <class T, class Map> void check_sampler(const Map& map, const apse::Sph
     const auto back = map.invert(s.direction);
     if (!(back.x >= T(0) && back.x <= T(1) && back.y >= T(0) && back.y <= T(1))) fail("inverse outside the square");
     const T p = map.pdf(s.direction);
-    if (!apse::is_finite(p) || !(p >= T(0))) fail("bad MIS pdf");
+    if (!apse::detail::is_finite(p) || !(p >= T(0))) fail("bad MIS pdf");
 }
 
 /// The map itself, or cosine-weighted for the receiver's normal n (g_cosine).
@@ -71,7 +71,7 @@ template <class T> void check(int shape, int map, T u1, T u2) {
     else if (shape == 1) e = apse::project_sphere(o, c, T(g_in[15]));
     else e = apse::project_ellipsoid(o, c, a, b, a3);
     const T omega = e.solid_angle();
-    if (!apse::is_finite(omega) || !(omega >= T(0)) || omega > T(6.2832)) fail("solid angle out of [0, 2 pi]");
+    if (!apse::detail::is_finite(omega) || !(omega >= T(0)) || omega > T(6.2832)) fail("solid angle out of [0, 2 pi]");
     const V n{T(g_in[16]), T(g_in[17]), T(g_in[18])};
     const apse::TabulationView table = apse_test::default_table().view();
     switch (map) {

@@ -20,13 +20,13 @@ double g_in[4];
 template <class T, class Map> void check_map(const Map& map, T u1, T u2) {
     const auto s = map.sample(glm::vec<2, T>(u1, u2));
     if (!apse_fuzz::finite3(s.direction)) fail("non-finite direction");
-    if (!apse::is_finite(s.pdf) || !(s.pdf >= T(0))) fail("pdf not finite and >= 0");
+    if (!apse::detail::is_finite(s.pdf) || !(s.pdf >= T(0))) fail("pdf not finite and >= 0");
     if (!(s.pdf > T(0))) return;
     if (std::fabs(glm::length(glm::dvec3(s.direction)) - 1) > 64 * double(apse::epsilon<T>())) fail("direction not unit");
     const auto back = map.invert(s.direction);
     if (!(back.x >= T(0) && back.x <= T(1) && back.y >= T(0) && back.y <= T(1))) fail("inverse outside the square");
     const T p = map.pdf(s.direction);
-    if (!apse::is_finite(p) || !(p >= T(0))) fail("bad MIS pdf");
+    if (!apse::detail::is_finite(p) || !(p >= T(0))) fail("bad MIS pdf");
 }
 
 template <class T> void check(const apse::TabulationView& view, T u1, T u2) {

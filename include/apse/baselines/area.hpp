@@ -46,7 +46,7 @@ template <class T> struct DiskFrame {
         DiskFrame f{center, vec3(T(0), T(0), T(1)), vec3(T(1), T(0), T(0)), vec3(T(0), T(1), T(0)), T(0), T(0)};
         const vec3 nn = detail::robust_normalize(normal);
         const T inv_r = T(1) / radius;
-        if (!(radius > T(0)) || !is_finite(radius) || !is_finite(inv_r) || !(glm::dot(nn, nn) > T(0)) ||
+        if (!(radius > T(0)) || !detail::is_finite(radius) || !detail::is_finite(inv_r) || !(glm::dot(nn, nn) > T(0)) ||
             !detail::finite3(center))
             return f;
         f.n = nn;
@@ -107,7 +107,7 @@ public:
         const T q = T(1) / (len * dn);
         const T ratio = len * frame_.inv_radius;
         const T pdf = (ratio * ratio) * (len2 * q) * (T(1) / pi_v<T>);
-        if (!is_finite(pdf)) return {detail::robust_normalize(d), T(0)};  // grazing, or overflow: no sample
+        if (!detail::is_finite(pdf)) return {detail::robust_normalize(d), T(0)};  // grazing, or overflow: no sample
         return {d * (dn * q), pdf};
     }
 
@@ -119,13 +119,13 @@ public:
         const vec3 dir = detail::robust_normalize(direction);
         const T cos_l = glm::dot(dir, frame_.n);
         const T t = glm::dot(w_, frame_.n) / cos_l;  // distance along the ray to the plane
-        if (!(t > T(0)) || !is_finite(t)) return T(0);
+        if (!(t > T(0)) || !detail::is_finite(t)) return T(0);
         const vec3 p = t * dir - w_;  // hit point relative to the centre
         const T ratio = t * frame_.inv_radius;
         const vec3 pr = p * frame_.inv_radius;
         if (!(glm::dot(pr, pr) <= T(1))) return T(0);
         const T pdf = ratio * ratio * (T(1) / pi_v<T>) / std::fabs(cos_l);
-        return is_finite(pdf) ? pdf : T(0);
+        return detail::is_finite(pdf) ? pdf : T(0);
     }
 
     /// The square point whose sample is `direction` (inverse of sample): the ray–disk hit point,
@@ -137,7 +137,7 @@ public:
         if (empty()) return centre;
         const vec3 dir = detail::robust_normalize(direction);
         const T t = glm::dot(w_, frame_.n) / glm::dot(dir, frame_.n);
-        if (!(t > T(0)) || !is_finite(t)) return centre;
+        if (!(t > T(0)) || !detail::is_finite(t)) return centre;
         const vec3 p = t * dir - w_;
         const T x = glm::dot(p, frame_.e1) * frame_.inv_radius, y = glm::dot(p, frame_.e2) * frame_.inv_radius;
         const T rho = std::sqrt(x * x + y * y);

@@ -39,9 +39,9 @@ APSE_FUNC SphericalRectangle<T> gamito_square(const glm::vec<3, T>& o, const glm
     using vec3 = glm::vec<3, T>;  ///< a 3-D vector (direction, point or normal)
     const vec3 n = robust_normalize(normal);
     const vec3 w0 = center - o;
-    if (!(radius > T(0)) || !is_finite(radius) || !(glm::dot(n, n) > T(0)) || !finite3(w0))
+    if (!(radius > T(0)) || !detail::is_finite(radius) || !(glm::dot(n, n) > T(0)) || !finite3(w0))
         return SphericalRectangle<T>();
-    const vec3 w = pow2_scale_for(max_of(max_abs3(w0), T(1)))(w0);  // no overflow in the dots
+    const vec3 w = pow2_scale_for(detail::max_of(max_abs3(w0), T(1)))(w0);  // no overflow in the dots
     vec3 v = w - glm::dot(w, n) * n;  // foot of o -> centre, in the plane
     v -= glm::dot(v, n) * n;          // second Gram–Schmidt pass: exactly in the plane
     vec3 yd = robust_normalize(v);
@@ -194,10 +194,10 @@ public:
         const T square = square_.solid_angle();
         if (!(disk > T(0) && square > T(0))) return;
         disk_solid_angle_ = disk;
-        acceptance_ = min_of(disk / square, T(1));
+        acceptance_ = detail::min_of(disk / square, T(1));
         success_ = -std::expm1(T(attempts_) * std::log1p(-acceptance_));  // 1 − (1 − A)^N
         pdf_ = success_ / disk;
-        if (!(pdf_ > T(0)) || !is_finite(pdf_)) pdf_ = T(0);
+        if (!(pdf_ > T(0)) || !detail::is_finite(pdf_)) pdf_ = T(0);
     }
 
     /// True if no sample can be produced (degenerate disk, o in its plane).
@@ -222,7 +222,7 @@ public:
             p.pdf = T(0);
             return p;
         }
-        const vec2 u0(clamp(u.x, T(0), T(1)), clamp(u.y, T(0), T(1)));
+        const vec2 u0(detail::clamp(u.x, T(0), T(1)), detail::clamp(u.y, T(0), T(1)));
         const detail::AttemptSequence<T> seq(u0);
         RectanglePoint<T> p;
         for (int k = 0; k < attempts_; ++k) {

@@ -32,7 +32,7 @@
 #include <cmath>
 
 #include "../config.hpp"
-#include "../math.hpp"
+#include "math.hpp"
 #include "pairs.hpp"
 
 namespace apse {

@@ -39,7 +39,7 @@
 
 #include "../config.hpp"
 #include "../elliptic.hpp"
-#include "../math.hpp"
+#include "math.hpp"
 #include "../spherical_ellipse.hpp"
 
 

@@ -22,7 +22,7 @@
 #include <cmath>
 
 #include "../config.hpp"
-#include "../math.hpp"
+#include "math.hpp"
 
 namespace apse {
 namespace detail {

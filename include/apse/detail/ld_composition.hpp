@@ -10,15 +10,17 @@
 /// The concentric map preserves area, so the composition has the radial map's density.
 ///
 /// `Radial` is RadialMap<T> or TabulatedMap<T>: it provides `ellipse()`, the counting sample
-/// (reached through DiagnosticsAccess, sample.hpp) and `local_coordinates(l)` (docs/math.md §4 inverse on the unit local direction l).
+/// (reached through DiagnosticsAccess, sample.hpp) and `local_coordinates(l)` (docs/math.md §4
+/// inverse on the unit local direction l; reached through MapAccess, detail/map_access.hpp).
 
 #include <cmath>
 
 #include "../config.hpp"
-#include "../math.hpp"
+#include "math.hpp"
 #include "../sample.hpp"
 #include "concentric.hpp"
 #include "glm.hpp"
+#include "map_access.hpp"
 #include "quadrant.hpp"
 
 namespace apse {
@@ -48,7 +50,7 @@ APSE_FUNC glm::vec<2, T> ld_invert(const Radial& radial, bool valid, const glm::
     bool ok = true;
     const glm::vec<3, T> l = normalize_direction(radial.ellipse().to_local(d), ok);
     if (!ok) return glm::vec<2, T>(T(0));
-    const glm::vec<2, T> polar = radial.local_coordinates(l);
+    const glm::vec<2, T> polar = MapAccess::local_coordinates(radial, l);
     return concentric_from_disk(std::sqrt(polar.y), polar.x);
 }
 

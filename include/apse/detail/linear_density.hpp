@@ -10,7 +10,7 @@
 #include <cmath>
 
 #include "../config.hpp"
-#include "../math.hpp"
+#include "math.hpp"
 
 namespace apse {
 namespace detail {

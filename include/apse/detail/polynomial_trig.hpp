@@ -19,7 +19,7 @@
 ///   by one step with sin_cos_quarter_turn to within a few ulps (ProjectedSolidAngleSampler).
 
 #include "../config.hpp"
-#include "../math.hpp"
+#include "math.hpp"
 #include "pairs.hpp"
 
 namespace apse {

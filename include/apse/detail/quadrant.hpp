@@ -21,7 +21,7 @@
 #include <cmath>
 
 #include "../config.hpp"
-#include "../math.hpp"
+#include "math.hpp"
 #include "glm.hpp"
 
 namespace apse {

@@ -12,7 +12,7 @@
 #include <cmath>
 
 #include "../config.hpp"
-#include "../math.hpp"
+#include "math.hpp"
 #include "cumulative_area.hpp"
 #include "glm.hpp"
 #include "quadrant.hpp"

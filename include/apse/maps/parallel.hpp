@@ -17,6 +17,7 @@
 #include "../detail/cumulative_area.hpp"
 #include "../detail/glm.hpp"
 #include "../detail/inversion.hpp"
+#include "../detail/map_access.hpp"
 #include "../detail/quadrant.hpp"
 
 namespace apse {
@@ -35,7 +36,7 @@ template <class T> APSE_FUNC T parallel_guess(T g, T beta, T w) noexcept {
                            s2 * (T(0.0014906081882330561) +
                                  s2 * (T(0.00010432809161716576) +
                                        s2 * (T(-7.249709538220279e-6) + s2 * T(1.1660217507228629e-6)))));
-    return clamp(beta * (w * planar + (T(1) - w) * g), T(0), beta);
+    return detail::clamp(beta * (w * planar + (T(1) - w) * g), T(0), beta);
 }
 
 }  // namespace detail
@@ -60,14 +61,14 @@ public:
     APSE_FUNC explicit ParallelMap(const SphericalEllipse<T>& ellipse) noexcept
         : ellipse_(ellipse), areas_(detail::EllipseAreas<T>::make(ellipse)), beta_(ellipse.beta()) {
         omega_ = detail::solid_angle_of(ellipse);
-        valid_ = !ellipse.empty() && omega_ > T(0) && is_finite(omega_);
+        valid_ = !ellipse.empty() && omega_ > T(0) && detail::is_finite(omega_);
         inv_omega_ = valid_ ? T(1) / omega_ : T(0);
         half_ = T(0.5) * omega_;
         // Shape weight: the half-area relative to the (psi, x) rectangle 2 beta sin(alpha) is
         // pi/4 for a small ellipse (w = 1) and tends to 1 for wide nearly hemispherical ones (w = 0).
         const T rect = T(2) * beta_ * areas_.a;
         const T fill = rect > T(0) ? half_ / rect : T(1);
-        blend_ = clamp((T(1) - fill) / (T(1) - pi_v<T> / T(4)), T(0), T(1));
+        blend_ = detail::clamp((T(1) - fill) / (T(1) - pi_v<T> / T(4)), T(0), T(1));
     }
 
     /// The ellipse this map samples.
@@ -101,8 +102,8 @@ public:
         if (!ok) return vec2(T(0));
         const T side = l.y < T(0) ? T(-1) : T(1);
         const T psi = std::atan2(std::fabs(l.y), l.z);
-        const detail::ParallelPoint<T> p = areas_.parallel_point(clamp(beta_ - psi, T(0), beta_));
-        const T g = clamp((half_ - areas_.parallel_half_area(p)) / half_, T(0), T(1));
+        const detail::ParallelPoint<T> p = areas_.parallel_point(detail::clamp(beta_ - psi, T(0), beta_));
+        const T g = detail::clamp((half_ - areas_.parallel_half_area(p)) / half_, T(0), T(1));
         T u2 = T(0.5);
         if (p.x_max > T(0)) {
             const T ax = std::fabs(l.x);
@@ -115,14 +116,18 @@ public:
                 const T h = T(0.5) * gap / p.x_max;
                 u2 = l.x > T(0) ? T(1) - h : h;
             }
-            u2 = clamp(u2, T(0), T(1));
+            u2 = detail::clamp(u2, T(0), T(1));
         }
-        return vec2(clamp(detail::unfold_half_fraction(side, g), T(0), T(1)), u2);
+        return vec2(detail::clamp(detail::unfold_half_fraction(side, g), T(0), T(1)), u2);
     }
 
     /// Density of sample() at the world-space direction `d`, in solid angle: 1/Omega inside the
     /// ellipse (boundary included), 0 outside, for an empty ellipse or a zero/NaN direction.
     APSE_FUNC T pdf(const vec3& d) const noexcept { return ellipse_.contains(d) ? inv_omega_ : T(0); }
+
+private:
+    friend struct detail::DiagnosticsAccess;
+    friend struct detail::MapAccess;
 
     /// Solves the edge-area equation J(e) = g Omega/2 (g in [0, 1]: the fraction of a half
     /// beyond the slice) for the slice state, with the inversion iterations in `iterations`.
@@ -140,23 +145,16 @@ public:
     }
 
     /// The first guess of solve_half for the edge fraction g in [0, 1] (the shape-blended
-    /// slice, detail parallel_guess; one sin/cos). Building block of CosineWeighted (a cheap
-    /// approximate image of the square's columns).
+    /// slice, detail parallel_guess; one sin/cos).
     APSE_FUNC detail::ParallelPoint<T> guess_half(T g) const noexcept {
-        return areas_.parallel_point(detail::parallel_guess(clamp(g, T(0), T(1)), beta_, blend_));
+        return areas_.parallel_point(detail::parallel_guess(detail::clamp(g, T(0), T(1)), beta_, blend_));
     }
-
-    /// The per-ellipse constants of the cumulative areas (building block).
-    APSE_FUNC const detail::EllipseAreas<T>& areas() const noexcept { return areas_; }
 
     /// Half-area I(psi) between the slices 0 and psi in [0, beta] (docs/math.md §5 I(psi),
-    /// cancellation-free; for tests and diagnostics). Omega_p(psi) = Omega/2 ± I(|psi|).
+    /// cancellation-free; for tests, through detail::MapAccess). Omega_p(psi) = Omega/2 ± I(|psi|).
     APSE_FUNC T half_area(T psi) const noexcept {
-        return areas_.parallel_half_area(areas_.parallel_point(clamp(beta_ - psi, T(0), beta_)));
+        return areas_.parallel_half_area(areas_.parallel_point(detail::clamp(beta_ - psi, T(0), beta_)));
     }
-
-private:
-    friend struct detail::DiagnosticsAccess;
 
     /// sample(u), counting the inversion iterations in `iterations` (detail/inversion.hpp).
     APSE_FUNC DirectionSample<T> sample_counted(const vec2& u, int& iterations) const noexcept {

@@ -17,6 +17,7 @@
 #include "../detail/cumulative_area.hpp"
 #include "../detail/glm.hpp"
 #include "../detail/inversion.hpp"
+#include "../detail/map_access.hpp"
 #include "../detail/quadrant.hpp"
 #include "../detail/radial_polar.hpp"
 
@@ -45,7 +46,7 @@ public:
     APSE_FUNC explicit RadialMap(const SphericalEllipse<T>& ellipse) noexcept
         : ellipse_(ellipse), areas_(detail::EllipseAreas<T>::make(ellipse)) {
         omega_ = detail::solid_angle_of(ellipse);
-        valid_ = !ellipse.empty() && omega_ > T(0) && is_finite(omega_);
+        valid_ = !ellipse.empty() && omega_ > T(0) && detail::is_finite(omega_);
         inv_omega_ = valid_ ? T(1) / omega_ : T(0);
         quarter_ = T(0.25) * omega_;
         // Lambert guess: the equal-area image of a small ellipse has semi-axes 2 sin(alpha/2),
@@ -89,7 +90,11 @@ public:
     /// ellipse (boundary included), 0 outside, for an empty ellipse or a zero/NaN direction.
     APSE_FUNC T pdf(const vec3& d) const noexcept { return ellipse_.contains(d) ? inv_omega_ : T(0); }
 
-    /// Building block: the local-frame direction (x along the major axis, z the centre) for
+private:
+    friend struct detail::DiagnosticsAccess;
+    friend struct detail::MapAccess;
+
+    /// The local-frame direction (x along the major axis, z the centre) for
     /// (u1, u2) in [0, 1]^2 (not checked), with the inversion iterations in `iterations`.
     APSE_FUNC vec3 local_direction(T u1, T u2, int& iterations) const noexcept {
         const detail::QuadrantFold<T> fold = detail::fold_quadrant(u1);
@@ -97,8 +102,8 @@ public:
         return detail::radial_direction(areas_, fold.quadrant, p.ct, p.st, p.c_max, u2);
     }
 
-    /// Building block shared with LdRadialMap (detail/ld_composition.hpp): (u1, u2) of the unit
-    /// local direction `l` (clamped to [0, 1]^2).
+    /// (u1, u2) of the unit local direction `l` (clamped to [0, 1]^2): invert() and LdRadialMap's
+    /// inverse (detail/ld_composition.hpp, through detail::MapAccess).
     APSE_FUNC vec2 local_coordinates(const vec3& l) const noexcept {
         const int q = detail::quadrant_of(l.x, l.y);
         const T x = std::fabs(l.x), y = std::fabs(l.y);
@@ -107,14 +112,14 @@ public:
         const T n = std::sqrt(bx * bx + ay * ay);
         const T ct = n > T(0) ? bx / n : T(1), st = n > T(0) ? ay / n : T(0);
         const T c = areas_.c_max(ct, st);
-        const T f = clamp(areas_.radial_area(ct, st, c) / quarter_, T(0), T(1));
+        const T f = detail::clamp(areas_.radial_area(ct, st, c) / quarter_, T(0), T(1));
         const T u1 = detail::unfold_quadrant_fraction(q, f);
         T u2 = T(1);
         if (l.z > T(0)) {
             const detail::RadialFraction<T> r = detail::radial_fraction(areas_, x, y, l.z, ct, st, c);
-            u2 = clamp(r.one_minus_cos / r.one_minus_c, T(0), T(1));
+            u2 = detail::clamp(r.one_minus_cos / r.one_minus_c, T(0), T(1));
         }
-        return vec2(clamp(u1, T(0), T(1)), u2);
+        return vec2(detail::clamp(u1, T(0), T(1)), u2);
     }
 
     /// Solves the quadrant equation Omega_r(tau) = f Omega/4 (f in [0, 1]) for the boundary
@@ -135,31 +140,22 @@ public:
     /// the Lambert-equal-area azimuth tan tau = kappa tan(f pi/2) (exact for caps and small
     /// ellipses; one sin/cos, one atan2).
     APSE_FUNC detail::RadialPoint<T> guess_quadrant(T f) const noexcept {
-        const T h = clamp(f, T(0), T(1)) * half_pi_v<T>;
+        const T h = detail::clamp(f, T(0), T(1)) * half_pi_v<T>;
         T ct, st;
-        detail::lambert_tau(kappa_, max_of(std::cos(h), T(0)), max_of(std::sin(h), T(0)), ct, st);
+        detail::lambert_tau(kappa_, detail::max_of(std::cos(h), T(0)), detail::max_of(std::sin(h), T(0)), ct, st);
         return areas_.radial_point(std::atan2(st, ct), ct, st);
     }
 
-    /// The per-ellipse constants of the cumulative areas (building block).
-    APSE_FUNC const detail::EllipseAreas<T>& areas() const noexcept { return areas_; }
-
-    /// kappa = cos(alpha/2)/cos(beta/2), the Lambert guess's ratio (building block).
-    APSE_FUNC T kappa() const noexcept { return kappa_; }
-
     /// Cumulative area of the first quadrant up to the azimuth phi in [0, pi/2] (docs/math.md §4
-    /// Omega_r(phi), cancellation-free; for tests and diagnostics).
+    /// Omega_r(phi), cancellation-free; for tests, through detail::MapAccess).
     APSE_FUNC T quadrant_area(T phi) const noexcept {
         const T c = std::cos(phi), s = std::sin(phi);
-        const T bx = areas_.ba * max_of(c, T(0)), ay = max_of(s, T(0));
+        const T bx = areas_.ba * detail::max_of(c, T(0)), ay = detail::max_of(s, T(0));
         const T n = std::sqrt(bx * bx + ay * ay);
         if (!(n > T(0))) return T(0);
         const T ct = bx / n, st = ay / n;
         return areas_.radial_area(ct, st, areas_.c_max(ct, st));
     }
-
-private:
-    friend struct detail::DiagnosticsAccess;
 
     /// sample(u), counting the inversion iterations in `iterations` (0 for the exact first guess;
     /// detail/inversion.hpp).

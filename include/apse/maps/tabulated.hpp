@@ -38,6 +38,7 @@
 #include "../detail/cumulative_area.hpp"
 #include "../detail/glm.hpp"
 #include "../detail/ld_composition.hpp"
+#include "../detail/map_access.hpp"
 #include "../detail/pairs.hpp"
 #include "../detail/polynomial_trig.hpp"
 #include "../detail/quadrant.hpp"
@@ -81,16 +82,16 @@ public:
         T inv_a, inv_b;
         detail::div2(T(1), areas_.a, T(1), areas_.b, inv_a, inv_b);
         pdf_scale_ = ((kappa_ * (T(1) / two_pi_v<T>)) * inv_a) * inv_b;
-        if (!is_finite(pdf_scale_) || !(pdf_scale_ > T(0))) { valid_ = false; pdf_scale_ = T(0); return; }
+        if (!detail::is_finite(pdf_scale_) || !(pdf_scale_ > T(0))) { valid_ = false; pdf_scale_ = T(0); return; }
         // Table coordinates: x = 1 − sqrt(cos alpha), y = beta/alpha (the latter by polynomials,
         // within 1e-7: it only chooses the rows blended, and any blend is exact for the sampler).
-        const T fx = clamp(T(1) - sqrt_ca, T(0), T(1)) * T(table.alpha_nodes - 1);
+        const T fx = detail::clamp(T(1) - sqrt_ca, T(0), T(1)) * T(table.alpha_nodes - 1);
         const T ratio = detail::arc_ratio(areas_.a, areas_.ca, areas_.b, areas_.cb);
-        const T fy = clamp(ratio, T(0), T(1)) * T(table.ratio_nodes - 1);
+        const T fy = detail::clamp(ratio, T(0), T(1)) * T(table.ratio_nodes - 1);
         int i = int(fx), j = int(fy);
         if (i > table.alpha_nodes - 2) i = table.alpha_nodes - 2;
         if (j > table.ratio_nodes - 2) j = table.ratio_nodes - 2;
-        const T wx = clamp(fx - T(i), T(0), T(1)), wy = clamp(fy - T(j), T(0), T(1));
+        const T wx = detail::clamp(fx - T(i), T(0), T(1)), wy = detail::clamp(fy - T(j), T(0), T(1));
         const int stride = bins_ + 1;
         rows_[0] = table.cdf + (i * table.ratio_nodes + j) * stride;
         rows_[1] = rows_[0] + stride;                          // (i, j + 1)
@@ -141,7 +142,11 @@ public:
         return density(hi - lo, az.ct, az.st, areas_.c_max(az.ct, az.st));
     }
 
-    /// Building block: the local-frame direction for (u1, u2) in [0, 1]^2 (not checked), its
+private:
+    friend struct detail::DiagnosticsAccess;
+    friend struct detail::MapAccess;
+
+    /// The local-frame direction for (u1, u2) in [0, 1]^2 (not checked), its
     /// solid-angle density in `pdf` and the table-walk steps in `steps`.
     APSE_FUNC vec3 local_direction(T u1, T u2, T& pdf, int& steps) const noexcept {
         const detail::QuadrantFold<T> fold = detail::fold_quadrant(u1);
@@ -167,10 +172,10 @@ public:
             f1 = cdf_at(lo + 1);
         }
         const T df = f1 - f0;
-        const T s = df > T(0) ? clamp((f - f0) / df, T(0), T(1)) : T(0);
+        const T s = df > T(0) ? detail::clamp((f - f0) / df, T(0), T(1)) : T(0);
         // lambda = (lo + s) pi/(2N); tan tau = kappa tan lambda;
         // (cos tau, sin tau) = (cos lambda, kappa sin lambda)/n
-        const detail::SinCosValues<T> sc = detail::sin_cos_quarter_turn(min_of((T(lo) + s) * inv_bins_, T(1)));
+        const detail::SinCosValues<T> sc = detail::sin_cos_quarter_turn(detail::min_of((T(lo) + s) * inv_bins_, T(1)));
         // n = |(px, py)| and n C(tau) = sqrt(cos^2 alpha px^2 + cos^2 beta py^2): one paired square
         // root, one paired division
         const T px = sc.c, py = kappa_ * sc.s, px2 = px * px, py2 = py * py;
@@ -183,33 +188,24 @@ public:
         return detail::radial_direction(areas_, fold.quadrant, ct, st, c, inv_1pc, u2);  // as RadialMap
     }
 
-    /// Building block shared with TabulatedLdRadialMap (detail/ld_composition.hpp): (u1, u2) of
-    /// the unit local direction `l` (clamped to [0, 1]^2).
+    /// (u1, u2) of the unit local direction `l` (clamped to [0, 1]^2): invert() and
+    /// TabulatedLdRadialMap's inverse (detail/ld_composition.hpp, through detail::MapAccess).
     APSE_FUNC vec2 local_coordinates(const vec3& l) const noexcept {
         const int q = detail::quadrant_of(l.x, l.y);
         const T x = std::fabs(l.x), y = std::fabs(l.y);
         const Azimuth az = azimuth_of(x, y);
         const T f0 = cdf_at(az.bin), f1 = cdf_at(az.bin + 1);
-        const T s = clamp(az.lambda / bin_width_ - T(az.bin), T(0), T(1));
-        const T f = clamp(f0 + s * (f1 - f0), T(0), T(1));
+        const T s = detail::clamp(az.lambda / bin_width_ - T(az.bin), T(0), T(1));
+        const T f = detail::clamp(f0 + s * (f1 - f0), T(0), T(1));
         const T u1 = detail::unfold_quadrant_fraction(q, f);
         T u2 = T(1);
         if (l.z > T(0)) {
             const T c = areas_.c_max(az.ct, az.st);
             const detail::RadialFraction<T> r = detail::radial_fraction(areas_, x, y, l.z, az.ct, az.st, c);
-            u2 = r.one_minus_c > T(0) ? clamp(r.one_minus_cos / r.one_minus_c, T(0), T(1)) : T(0);
+            u2 = r.one_minus_c > T(0) ? detail::clamp(r.one_minus_cos / r.one_minus_c, T(0), T(1)) : T(0);
         }
-        return vec2(clamp(u1, T(0), T(1)), u2);
+        return vec2(detail::clamp(u1, T(0), T(1)), u2);
     }
-
-    /// The per-ellipse constants of the cumulative areas (building block).
-    APSE_FUNC const detail::EllipseAreas<T>& areas() const noexcept { return areas_; }
-
-    /// kappa = cos(alpha/2)/cos(beta/2), the ratio of the Lambert anomaly (building block).
-    APSE_FUNC T kappa() const noexcept { return kappa_; }
-
-private:
-    friend struct detail::DiagnosticsAccess;
 
     /// sample(u), counting the table-walk steps in `iterations` (0 when the uniform guess was the
     /// bin).
@@ -237,7 +233,7 @@ private:
         Azimuth az;
         az.ct = n > T(0) ? bx / n : T(1);
         az.st = n > T(0) ? y / n : T(0);
-        az.lambda = clamp(std::atan2(az.st, kappa_ * az.ct), T(0), half_pi_v<T>);
+        az.lambda = detail::clamp(std::atan2(az.st, kappa_ * az.ct), T(0), half_pi_v<T>);
         int k = int(az.lambda / bin_width_);
         az.bin = k < 0 ? 0 : (k > bins_ - 1 ? bins_ - 1 : k);
         return az;
@@ -253,7 +249,7 @@ private:
     /// (file comment).
     APSE_FUNC T density(T df, T ct, T st, T c) const noexcept {
         const T p = ((df * T(bins_)) * (T(1) + c) / (kappa2_ * ct * ct + st * st)) * pdf_scale_;
-        return is_finite(p) ? max_of(p, T(0)) : T(0);
+        return detail::is_finite(p) ? detail::max_of(p, T(0)) : T(0);
     }
 
     SphericalEllipse<T> ellipse_;

@@ -1,0 +1,51 @@
+// apse — area-preserving parameterizations for spherical ellipses.
+// SPDX-License-Identifier: MIT
+#pragma once
+
+/// @file detail/map_access.hpp
+/// `MapAccess`: the door through which apse's own code and its tests reach the maps' private
+/// building blocks (the maps befriend it). A user samples through the public sampler concept
+/// (sample / pdf / invert); these are the pieces under it.
+
+#include "../config.hpp"
+
+namespace apse {
+namespace detail {
+
+/// Static forwarders to the maps' private building blocks.
+struct MapAccess {
+    /// map.local_coordinates(l): (u1, u2) in [0, 1]^2 of the unit local direction `l`
+    /// (RadialMap, TabulatedMap; the LD-radial maps' inverse goes through it).
+    template <class Map, class V>
+    static APSE_FUNC auto local_coordinates(const Map& map, const V& l) noexcept {
+        return map.local_coordinates(l);
+    }
+
+    /// map.solve_quadrant(f, iterations): RadialMap's boundary state at the fraction f of the
+    /// quadrant's area, with the inversion iterations.
+    template <class Map, class T>
+    static APSE_FUNC auto solve_quadrant(const Map& map, T f, int& iterations) noexcept {
+        return map.solve_quadrant(f, iterations);
+    }
+
+    /// map.quadrant_area(phi): RadialMap's cumulative area of the first quadrant up to the
+    /// azimuth phi in [0, pi/2].
+    template <class Map, class T> static APSE_FUNC T quadrant_area(const Map& map, T phi) noexcept {
+        return map.quadrant_area(phi);
+    }
+
+    /// map.solve_half(g, iterations): ParallelMap's slice state at the edge fraction g of a half,
+    /// with the inversion iterations.
+    template <class Map, class T>
+    static APSE_FUNC auto solve_half(const Map& map, T g, int& iterations) noexcept {
+        return map.solve_half(g, iterations);
+    }
+
+    /// map.half_area(psi): ParallelMap's half-area I(psi) between the slices 0 and psi in [0, beta].
+    template <class Map, class T> static APSE_FUNC T half_area(const Map& map, T psi) noexcept {
+        return map.half_area(psi);
+    }
+};
+
+}  // namespace detail
+}  // namespace apse
