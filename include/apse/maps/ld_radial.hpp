@@ -14,7 +14,7 @@
 #include "../sample.hpp"
 #include "../spherical_ellipse.hpp"
 #include "../detail/glm.hpp"
-#include "../detail/ld_composition.hpp"
+#include "ld_composition.hpp"
 #include "radial.hpp"
 
 namespace apse {

@@ -14,12 +14,12 @@
 #include "../math.hpp"
 #include "../sample.hpp"
 #include "../spherical_ellipse.hpp"
-#include "../detail/cumulative_area.hpp"
 #include "../detail/glm.hpp"
 #include "../detail/inversion.hpp"
 #include "../detail/map_access.hpp"
 #include "../detail/quadrant.hpp"
-#include "../detail/radial_polar.hpp"
+#include "cumulative_area.hpp"
+#include "radial_polar.hpp"
 
 namespace apse {
 
@@ -27,7 +27,7 @@ namespace apse {
 ///
 /// Construction precomputes the solid angle (one R_J) and the constants of the cumulative area.
 /// Each sample folds u1 onto a quadrant, solves Omega_r(tau) = f Omega/4 for the orthographic
-/// eccentric anomaly tau (detail/cumulative_area.hpp) by bracketed Halley/Newton with the exact
+/// eccentric anomaly tau (maps/cumulative_area.hpp) by bracketed Halley/Newton with the exact
 /// density, from the Lambert-equal-area first guess tan tau = (cos(alpha/2)/cos(beta/2)) tan(f pi/2)
 /// (exact for caps and for small ellipses), with one closed-form evaluation and cheap Hermite
 /// increments after it (detail/inversion.hpp); relative stopping rule 4 eps of the quadrant area.
@@ -103,7 +103,7 @@ private:
     }
 
     /// (u1, u2) of the unit local direction `l` (clamped to [0, 1]^2): invert() and LdRadialMap's
-    /// inverse (detail/ld_composition.hpp, through detail::MapAccess).
+    /// inverse (maps/ld_composition.hpp, through detail::MapAccess).
     APSE_FUNC vec2 local_coordinates(const vec3& l) const noexcept {
         const int q = detail::quadrant_of(l.x, l.y);
         const T x = std::fabs(l.x), y = std::fabs(l.y);
@@ -123,7 +123,7 @@ private:
     }
 
     /// Solves the quadrant equation Omega_r(tau) = f Omega/4 (f in [0, 1]) for the boundary
-    /// state at tau (detail/cumulative_area.hpp); `iterations` as in sample().
+    /// state at tau (maps/cumulative_area.hpp); `iterations` as in sample().
     APSE_FUNC detail::RadialPoint<T> solve_quadrant(T f, int& iterations) const noexcept {
         iterations = 0;
         if (!(f > T(0))) return areas_.radial_point(T(0), T(1), T(0));

@@ -2,7 +2,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
-/// @file detail/radial_polar.hpp
+/// @file maps/radial_polar.hpp
 /// The polar step of the radial maps (docs/math.md §4), written once for RadialMap and TabulatedMap
 /// (and through them LdRadialMap and TabulatedLdRadialMap): once u1 has fixed the azimuth, i.e.
 /// the boundary point of the ellipse at that azimuth, u2 picks the polar angle uniformly in solid
@@ -12,10 +12,10 @@
 #include <cmath>
 
 #include "../config.hpp"
-#include "math.hpp"
+#include "../detail/glm.hpp"
+#include "../detail/math.hpp"
+#include "../detail/quadrant.hpp"
 #include "cumulative_area.hpp"
-#include "glm.hpp"
-#include "quadrant.hpp"
 
 namespace apse {
 namespace detail {

@@ -2,7 +2,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
-/// @file detail/ld_composition.hpp
+/// @file maps/ld_composition.hpp
 /// The LD-radial composition (docs/math.md §4), written once for LdRadialMap (over RadialMap) and
 /// TabulatedLdRadialMap (over TabulatedMap): the Shirley–Chiu concentric map first
 /// (detail/concentric.hpp), then the radial-type map with u1 = angle/(2 pi) (azimuthal area
@@ -16,12 +16,12 @@
 #include <cmath>
 
 #include "../config.hpp"
-#include "math.hpp"
 #include "../sample.hpp"
-#include "concentric.hpp"
-#include "glm.hpp"
-#include "map_access.hpp"
-#include "quadrant.hpp"
+#include "../detail/concentric.hpp"
+#include "../detail/glm.hpp"
+#include "../detail/map_access.hpp"
+#include "../detail/math.hpp"
+#include "../detail/quadrant.hpp"
 
 namespace apse {
 namespace detail {
