@@ -41,8 +41,8 @@
 #include "../detail/polynomial_trig.hpp"
 #include "../detail/quadrant.hpp"
 #include "cumulative_area.hpp"
-#include "ld_composition.hpp"
-#include "radial_polar.hpp"
+#include "ld_radial.hpp"
+#include "radial.hpp"
 #include "tabulation_table.hpp"
 
 namespace apse {
@@ -189,7 +189,7 @@ private:
     }
 
     /// (u1, u2) of the unit local direction `l` (clamped to [0, 1]^2): invert() and
-    /// TabulatedLdRadialMap's inverse (maps/ld_composition.hpp, through detail::MapAccess).
+    /// TabulatedLdRadialMap's inverse (maps/ld_radial.hpp, through detail::MapAccess).
     APSE_FUNC vec2 local_coordinates(const vec3& l) const noexcept {
         const int q = detail::quadrant_of(l.x, l.y);
         const T x = std::fabs(l.x), y = std::fabs(l.y);
