@@ -39,12 +39,12 @@
 #include "spherical_ellipse.hpp"
 #include "detail/glm.hpp"
 #include "detail/type_identity.hpp"
+#include "maps/cumulative_area.hpp"
 #include "maps/ld_radial.hpp"
 #include "maps/parallel.hpp"
 #include "maps/radial.hpp"
 #include "maps/tabulated.hpp"
 #include "cosine_weighted.hpp"
-#include "detail/cumulative_area.hpp"
 
 namespace apse {
 

@@ -8,16 +8,58 @@
 /// u1 = angle/(2 pi) (azimuthal area fraction) and u2 = radius^2 (radial solid-angle fraction).
 /// Both steps preserve area, so the composition does; it is continuous on the whole closed
 /// square (centre → ellipse centre, boundary → ellipse boundary).
+///
+/// The composition itself (namespace detail: ld_sample, ld_invert) is written once for
+/// LdRadialMap (over RadialMap) and TabulatedLdRadialMap (over TabulatedMap, tabulated.hpp):
+/// `Radial` provides `ellipse()`, the counting sample (reached through DiagnosticsAccess,
+/// sample.hpp) and `local_coordinates(l)` (docs/math.md §4 inverse on the unit local direction l;
+/// reached through MapAccess, detail/map_access.hpp). The concentric map preserves area, so the
+/// composition has the radial map's density.
+
+#include <cmath>
 
 #include "../config.hpp"
 #include "../math.hpp"
 #include "../sample.hpp"
 #include "../spherical_ellipse.hpp"
+#include "../detail/concentric.hpp"
 #include "../detail/glm.hpp"
-#include "../detail/ld_composition.hpp"
+#include "../detail/map_access.hpp"
+#include "../detail/quadrant.hpp"
 #include "radial.hpp"
 
 namespace apse {
+namespace detail {
+
+/// sample() of the LD composition over `radial` (`valid`: the radial map can sample). u is
+/// clamped into [0, 1]^2; a NaN coordinate or !valid gives pdf 0 and the centre direction, with
+/// `iterations` = 0; otherwise the radial map's sample at (turns, radius^2) of the concentric
+/// image of u (already in [0, 1]^2), its pdf and its `iterations`.
+template <class T, class Radial>
+APSE_FUNC DirectionSample<T> ld_sample(const Radial& radial, bool valid, const glm::vec<2, T>& u,
+                                       int& iterations) noexcept {
+    iterations = 0;
+    bool ok = valid;
+    const glm::vec<2, T> uc = clamp_unit(u, ok);
+    if (!ok) return {radial.ellipse().z, T(0)};
+    const ConcentricPolar<T> disk = concentric_to_disk(uc);
+    return DiagnosticsAccess::sample(radial, glm::vec<2, T>(disk.turns, disk.radius * disk.radius), iterations);
+}
+
+/// invert() of the LD composition over `radial`: the radial map's (u1, u2) of the world-space
+/// direction `d` (any non-zero length), then the inverse concentric map of (radius sqrt(u2),
+/// turns u1). !valid or a zero/NaN/infinite direction gives (0, 0).
+template <class T, class Radial>
+APSE_FUNC glm::vec<2, T> ld_invert(const Radial& radial, bool valid, const glm::vec<3, T>& d) noexcept {
+    if (!valid) return glm::vec<2, T>(T(0));
+    bool ok = true;
+    const glm::vec<3, T> l = normalize_direction(radial.ellipse().to_local(d), ok);
+    if (!ok) return glm::vec<2, T>(T(0));
+    const glm::vec<2, T> polar = MapAccess::local_coordinates(radial, l);
+    return concentric_from_disk(std::sqrt(polar.y), polar.x);
+}
+
+}  // namespace detail
 
 /// LD-radial area-preserving map of the unit square onto a spherical ellipse (docs/math.md §4):
 /// RadialMap composed with the concentric map (same set-up, inversion and accuracy as

@@ -14,11 +14,11 @@
 #include "../math.hpp"
 #include "../sample.hpp"
 #include "../spherical_ellipse.hpp"
-#include "../detail/cumulative_area.hpp"
 #include "../detail/glm.hpp"
 #include "../detail/inversion.hpp"
 #include "../detail/map_access.hpp"
 #include "../detail/quadrant.hpp"
+#include "cumulative_area.hpp"
 
 namespace apse {
 namespace detail {
@@ -45,7 +45,7 @@ template <class T> APSE_FUNC T parallel_guess(T g, T beta, T w) noexcept {
 ///
 /// Construction precomputes the solid angle (one R_J). Each sample folds u1 onto one half of the
 /// ellipse, solves the cumulative-area equation for the distance e = beta − psi of the slice from
-/// the end of the minor axis (cancellation-free sector + triangle form, detail/cumulative_area.hpp)
+/// the end of the minor axis (cancellation-free sector + triangle form, maps/cumulative_area.hpp)
 /// by bracketed Halley/Newton with the exact density 2 x_max, from a shape-blended first guess,
 /// one closed-form evaluation and cheap Hermite increments after it (detail/inversion.hpp);
 /// relative stopping rule 4 eps of Omega/2. Accuracy (measured, docs/maps.md): cumulative-area

@@ -10,7 +10,7 @@
 ///
 /// How it works (*derived*, see docs/tabulated.md). In one quadrant, parametrise the boundary by
 /// the orthographic eccentric anomaly tau (tan phi = (b/a) tan tau, a = sin alpha, b = sin beta,
-/// detail/cumulative_area.hpp), and tau by a "Lambert anomaly" lambda in [0, pi/2]:
+/// maps/cumulative_area.hpp), and tau by a "Lambert anomaly" lambda in [0, pi/2]:
 /// tan tau = kappa tan lambda, kappa = cos(alpha/2)/cos(beta/2). The exact area density in lambda,
 ///     dOmega_r/dlambda = a b kappa / ((1 + C(tau)) (cos^2 lambda + kappa^2 sin^2 lambda)),
 /// C(tau) = cos theta_max = sqrt(cos^2 alpha cos^2 tau + cos^2 beta sin^2 tau), is constant for
@@ -35,14 +35,14 @@
 #include "../math.hpp"
 #include "../sample.hpp"
 #include "../spherical_ellipse.hpp"
-#include "../detail/cumulative_area.hpp"
 #include "../detail/glm.hpp"
-#include "../detail/ld_composition.hpp"
 #include "../detail/map_access.hpp"
 #include "../detail/pairs.hpp"
 #include "../detail/polynomial_trig.hpp"
 #include "../detail/quadrant.hpp"
-#include "../detail/radial_polar.hpp"
+#include "cumulative_area.hpp"
+#include "ld_radial.hpp"
+#include "radial.hpp"
 #include "tabulation_table.hpp"
 
 namespace apse {
@@ -189,7 +189,7 @@ private:
     }
 
     /// (u1, u2) of the unit local direction `l` (clamped to [0, 1]^2): invert() and
-    /// TabulatedLdRadialMap's inverse (detail/ld_composition.hpp, through detail::MapAccess).
+    /// TabulatedLdRadialMap's inverse (maps/ld_radial.hpp, through detail::MapAccess).
     APSE_FUNC vec2 local_coordinates(const vec3& l) const noexcept {
         const int q = detail::quadrant_of(l.x, l.y);
         const T x = std::fabs(l.x), y = std::fabs(l.y);

@@ -2,7 +2,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
-/// @file detail/cumulative_area.hpp
+/// @file maps/cumulative_area.hpp
 /// The cumulative areas the maps invert (docs/math.md §4–5), written without cancellation, with their
 /// densities and the densities' slopes (for Halley steps and for the cheap Hermite increments of
 /// detail/inversion.hpp).
@@ -39,8 +39,8 @@
 
 #include "../config.hpp"
 #include "../elliptic.hpp"
-#include "math.hpp"
 #include "../spherical_ellipse.hpp"
+#include "../detail/math.hpp"
 
 
 namespace apse {
