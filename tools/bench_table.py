@@ -203,11 +203,12 @@ def samplers_table(datas):
                 q = ratios.get((key, ty, n))
                 cells.append('—' if not q else '%.1f–%.1f×' % (min(q), max(q)))
             print('| ' + ' | '.join(cells) + ' |')
-    breakdown_table(times)
+    breakdown_table(times, ratios)
 
 
-def breakdown_table(times):
-    """Cost breakdown per map from the set-up-only runs (ns: median times)."""
+def breakdown_table(times, ratios):
+    """Cost breakdown per map from the set-up-only runs (ns: median times; the last column is the
+    sampler table's ratio)."""
     def t(key, ty, n):
         return times.get((key, ty, n))
     if t('projection', 'double', 0) is None:
@@ -220,13 +221,13 @@ def breakdown_table(times):
         title = dict(SAMPLERS).get(key, key)
         for ty in ('double', 'float'):
             proj, proj_om = t('projection', ty, 0), t('projection_solid_angle', ty, 0)
-            setup, one, sixteen, area = t(key, ty, 0), t(key, ty, 1), t(key, ty, 16), t('area', ty, 1)
+            setup, one, sixteen = t(key, ty, 0), t(key, ty, 1), t(key, ty, 16)
             if None in (proj, proj_om, setup, one, sixteen):
                 continue
             omega = proj_om - proj if has_omega else 0.0
             cells = [title, ty, '%.0f' % proj, ('%.0f' % omega) if has_omega else '—',
                      '%.0f' % (setup - proj - omega), '%.1f' % ((sixteen - one) / 15), '%.0f' % one,
-                     ('%.1f×' % (one / area)) if area else '—']
+                     ('%.1f×' % median(ratios[(key, ty, 1)])) if (key, ty, 1) in ratios else '—']
             print('| ' + ' | '.join(cells) + ' |')
     print()
     print('ns, median times (over the layouts, if several). projection = project_disk alone (the '

@@ -13,10 +13,10 @@ cd "$(dirname "$0")/.."
 build=${1:-build/release}
 reps=${2:-11}
 if [ ! -f "$build/CMakeCache.txt" ]; then
-  cmake -S . -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release -DAPSE_TEST_CUDA=OFF -DAPSE_TEST_CONSUMERS=OFF
+  cmake -S . -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release -DAPSE_TEST_CUDA=OFF -DAPSE_TEST_CONSUMERS=OFF >&2
 fi
 targets=(bench_samplers bench_samplers_align32 bench_samplers_align64 bench_samplers_align128)
-cmake --build "$build" --target "${targets[@]}"
+cmake --build "$build" --target "${targets[@]}" >&2
 out="$build/speed"
 mkdir -p "$out"
 for t in "${targets[@]}"; do
