@@ -25,12 +25,6 @@
 namespace apse {
 namespace detail {
 
-/// Working precision of each function for T = float: float itself ("native") or double
-/// ("promoted"). double always works in double. The choice and its measurements are in
-/// docs/elliptic.md; every function meets its budget natively, so float stays float (fast on
-/// GPUs, where double is 2-64x slower).
-template <class T> using elliptic_work_t = T;
-
 /// Carlson domain: all >= 0 and finite, at most one of them zero.
 template <class T> APSE_FUNC bool carlson_args_ok(T x, T y, T z) noexcept {
     // (the maximum, not the sum, is tested: the sum of large finite arguments may overflow)
@@ -186,8 +180,7 @@ template <class T> APSE_FUNC T pi_impl(T n, T phi, T m) noexcept {
 /// Duplication with a degree-9 series; with a zero argument the arithmetic-geometric mean.
 template <class T> APSE_FUNC T carlson_rf(T x, T y, T z) noexcept {
     static_assert(detail::is_real_type<T>(), "apse: T must be float or double");
-    using W = detail::elliptic_work_t<T>;
-    return T(detail::rf_impl<W>(W(x), W(y), W(z)));
+    return detail::rf_impl<T>(x, y, z);
 }
 
 /// Carlson's symmetric integral of the second kind
@@ -196,8 +189,7 @@ template <class T> APSE_FUNC T carlson_rf(T x, T y, T z) noexcept {
 /// Accuracy (measured): 2.4 eps float, 2.3 eps double (budget 8).
 template <class T> APSE_FUNC T carlson_rd(T x, T y, T z) noexcept {
     static_assert(detail::is_real_type<T>(), "apse: T must be float or double");
-    using W = detail::elliptic_work_t<T>;
-    return T(detail::rd_impl<W>(W(x), W(y), W(z)));
+    return detail::rd_impl<T>(x, y, z);
 }
 
 /// Carlson's symmetric integral of the third kind
@@ -210,8 +202,7 @@ template <class T> APSE_FUNC T carlson_rd(T x, T y, T z) noexcept {
 /// ~4x faster than duplication.
 template <class T> APSE_FUNC T carlson_rj(T x, T y, T z, T p) noexcept {
     static_assert(detail::is_real_type<T>(), "apse: T must be float or double");
-    using W = detail::elliptic_work_t<T>;
-    return T(detail::rj_impl<W>(W(x), W(y), W(z), W(p)));
+    return detail::rj_impl<T>(x, y, z, p);
 }
 
 /// Carlson's degenerate integral R_C(x, y) = R_F(x, y, y) = 1/2 int_0^inf dt / ((t+y) sqrt(t+x))
@@ -221,8 +212,7 @@ template <class T> APSE_FUNC T carlson_rj(T x, T y, T z, T p) noexcept {
 /// Accuracy (measured): 1.5 eps float, 1.1 eps double (budget 4).
 template <class T> APSE_FUNC T carlson_rc(T x, T y) noexcept {
     static_assert(detail::is_real_type<T>(), "apse: T must be float or double");
-    using W = detail::elliptic_work_t<T>;
-    return T(detail::rc_impl<W>(W(x), W(y)));
+    return detail::rc_impl<T>(x, y);
 }
 
 /// Incomplete elliptic integral of the first kind, **parameter m = k^2**:
@@ -234,8 +224,7 @@ template <class T> APSE_FUNC T carlson_rc(T x, T y) noexcept {
 /// Accuracy (measured): 2.5 eps float, 2.8 eps double (budget 8).
 template <class T> APSE_FUNC T ellint_f(T phi, T m) noexcept {
     static_assert(detail::is_real_type<T>(), "apse: T must be float or double");
-    using W = detail::elliptic_work_t<T>;
-    return T(detail::f_impl<W>(W(phi), W(m)));
+    return detail::f_impl<T>(phi, m);
 }
 
 /// Incomplete elliptic integral of the third kind, **parameter m = k^2**, characteristic n:
@@ -249,8 +238,7 @@ template <class T> APSE_FUNC T ellint_f(T phi, T m) noexcept {
 /// Accuracy (measured): 2.4 eps float, 3.5 eps double (budget 16).
 template <class T> APSE_FUNC T ellint_pi(T n, T phi, T m) noexcept {
     static_assert(detail::is_real_type<T>(), "apse: T must be float or double");
-    using W = detail::elliptic_work_t<T>;
-    return T(detail::pi_impl<W>(W(n), W(phi), W(m)));
+    return detail::pi_impl<T>(n, phi, m);
 }
 
 /// Complete elliptic integral of the first kind, **parameter m = k^2**:
@@ -260,8 +248,7 @@ template <class T> APSE_FUNC T ellint_pi(T n, T phi, T m) noexcept {
 /// Accuracy (measured): 1.5 eps float, 1.7 eps double (budget 8). By the arithmetic-geometric mean.
 template <class T> APSE_FUNC T comp_ellint_k(T m) noexcept {
     static_assert(detail::is_real_type<T>(), "apse: T must be float or double");
-    using W = detail::elliptic_work_t<T>;
-    return T(detail::k_impl<W>(W(m)));
+    return detail::k_impl<T>(m);
 }
 
 /// Complete elliptic integral of the third kind, **parameter m = k^2**:
@@ -271,8 +258,7 @@ template <class T> APSE_FUNC T comp_ellint_k(T m) noexcept {
 /// Accuracy (measured): 3.2 eps float, 3.0 eps double (budget 16).
 template <class T> APSE_FUNC T comp_ellint_pi(T n, T m) noexcept {
     static_assert(detail::is_real_type<T>(), "apse: T must be float or double");
-    using W = detail::elliptic_work_t<T>;
-    return T(detail::comp_pi_impl<W>(W(n), W(m)));
+    return detail::comp_pi_impl<T>(n, m);
 }
 
 }  // namespace apse
