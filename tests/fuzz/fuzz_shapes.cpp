@@ -30,7 +30,11 @@ bool g_cosine = false;
 }
 
 
-template <class T, class Map> void check_sampler(const Map& map, const apse::SphericalEllipse<T>& e, T u1, T u2) {
+/// The checks on one sampler; `horizon`: the receiver's normal its samples must not fall below
+/// (null: no such promise, e.g. a plain map, or a cosine-weighted one whose normal it treats as
+/// zero — a subnormal one under fast-math's denormals-are-zero).
+template <class T, class Map>
+void check_sampler(const Map& map, const apse::SphericalEllipse<T>& e, T u1, T u2, const glm::vec<3, T>* horizon) {
     const auto s = map.sample(glm::vec<2, T>(u1, u2));
     if (!apse_fuzz::finite3(s.direction)) fail("non-finite direction");
     if (!apse::detail::is_finite(s.pdf) || !(s.pdf >= T(0))) fail("pdf not finite and >= 0");
@@ -43,8 +47,8 @@ template <class T, class Map> void check_sampler(const Map& map, const apse::Sph
     const double x = std::fmax(std::fabs(l.x) - d, 0) / double(e.tan_alpha);
     const double y = std::fmax(std::fabs(l.y) - d, 0) / double(e.tan_beta);
     if (!(l.z + d > 0) || x * x + y * y > (l.z + d) * (l.z + d)) fail("sample outside the ellipse");
-    if (g_cosine) {  // above the horizon, up to the direction's rounding (unit vectors: absolute)
-        const glm::dvec3 n(g_in[16], g_in[17], g_in[18]);
+    if (horizon) {  // above the horizon, up to the direction's rounding (unit vectors: absolute)
+        const glm::dvec3 n(*horizon);
         const double nl = glm::length(n);
         if (nl > 0 && std::isfinite(nl) && glm::dot(n / nl, w) < -d) fail("cosine-weighted sample below the horizon");
     }
@@ -57,8 +61,12 @@ template <class T, class Map> void check_sampler(const Map& map, const apse::Sph
 /// The map itself, or cosine-weighted for the receiver's normal n (g_cosine).
 template <class T, class Map>
 void check_map(const Map& map, const apse::SphericalEllipse<T>& e, const glm::vec<3, T>& n, T u1, T u2) {
-    if (g_cosine) check_sampler<T>(apse::CosineWeighted<Map>(map, n), e, u1, u2);
-    else check_sampler<T>(map, e, u1, u2);
+    if (g_cosine) {
+        const apse::CosineWeighted<Map> cw(map, n);
+        check_sampler<T>(cw, e, u1, u2, cw.weighted() ? &n : nullptr);
+    } else {
+        check_sampler<T>(map, e, u1, u2, nullptr);
+    }
 }
 
 template <class T> void check(int shape, int map, T u1, T u2) {
