@@ -126,6 +126,14 @@ public:
     /// the LD-radial maps). NaN u or empty(): pdf 0 and the ellipse's centre direction.
     APSE_FUNC DirectionSample<T> sample(const vec2& u) const noexcept {
         if (mode_ == Mode::empty) return {base_.ellipse().z, T(0)};
+        if (mode_ == Mode::plain) {  // the plain map's own sample
+            if constexpr (Traits::ld) {
+                int iterations = 0;
+                return detail::ld_sample(base_, true, u, iterations);
+            } else {
+                return base_.sample(u);
+            }
+        }
         bool ok = true;
         const vec2 uc = detail::clamp_unit(u, ok);
         if (!ok) return {base_.ellipse().z, T(0)};
@@ -134,8 +142,7 @@ public:
             const detail::ConcentricPolar<T> d = detail::concentric_to_disk(uc);
             v = vec2(d.turns, d.radius * d.radius);
         }
-        if (mode_ == Mode::weighted) return psa_.sample(v);
-        return base_.sample(v);
+        return psa_.sample(v);
     }
 
     /// Density of sample() at the world-space direction `d` (any non-zero length), in solid

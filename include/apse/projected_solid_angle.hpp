@@ -334,7 +334,7 @@ private:
         T sx, sy;
         detail::psa_azimuth_point(f.fraction, sx, sy);
         const T r2 = sx * sx + q_ * q_ * sy * sy, inv = T(1) / std::sqrt(r2);
-        const vec3 h = detail::place_in_quadrant(f.quadrant, sx * inv, q_ * sy * inv, T(0));
+        const vec3 h = detail::place_in_quadrant(f, sx * inv, q_ * sy * inv, T(0));
         return {x, h.x, h.y, detail::psa_turn_jacobian<T>() * q_ / r2};
     }
 

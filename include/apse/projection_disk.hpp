@@ -89,7 +89,7 @@ APSE_FUNC SphericalEllipse<T> project_disk(const glm::vec<3, T>& o, const glm::v
     const bool refine = h2 < T(0.0625) * glm::dot(w, w);
     if (refine) v -= (glm::dot(v, nv) * inv_n2) * nv;
     const vec3 n = nv * inv_n;
-    const vec3 zd = wn > T(0) ? n : -n;  // from o towards the plane
+    const vec3 zd = n * std::copysign(T(1), wn);  // from o towards the plane (wn != 0 here; no branch)
     // An offset below the rounding noise of w (or so small that v / h would not be accurate) is
     // the axis: alpha − beta = O(h²) is far below an ulp there, and any frame is exact.
     const T h_min = detail::max_of(T(8) * epsilon<T>() * detail::max_abs3(w), detail::tan_min<T>() * detail::max_of(detail::max_abs3(w), r));

@@ -14,6 +14,7 @@
 #include "../config.hpp"
 #include "math.hpp"
 #include "glm.hpp"
+#include "quadrant.hpp"
 
 namespace apse {
 namespace detail {
@@ -48,6 +49,32 @@ template <class T> APSE_FUNC ConcentricPolar<T> concentric_to_disk(const glm::ve
     }
     if (!(turns < T(1))) turns = T(0);  // 1 − tiny rounded up: the same point
     return {radius, turns};
+}
+
+/// The concentric map's point of u, folded as the LD-radial map reads it: the quadrant and the
+/// fraction of its quarter turn that fold_quadrant(turns) gives, and radius^2.
+template <class T> struct ConcentricFold {
+    QuadrantFold<T> fold;  ///< quadrant (signs of the disk point's x, y) and the fraction of the
+                           ///< quarter turn measured from the x axis
+    T radius2;             ///< radius^2, in [0, 1]
+};
+
+/// concentric_to_disk(u) folded onto the first quadrant, without branches: with A = 2u1 − 1 and
+/// B = 2u2 − 1, the disk point's x has the sign of A and y that of B, the radius is
+/// M = max(|A|, |B|), and the angle from the x axis is (pi/4)|B|/|A| (|A| > |B|) or
+/// pi/2 − (pi/4)|A|/|B|: the fraction of the quarter turn is |B|/(2|A|) or 1 − |A|/(2|B|), both
+/// 1/2 + (|B| − |A|)/(2M). The same point as fold_quadrant(concentric_to_disk(u).turns) up to
+/// rounding (an absolute error of about one ulp of 1/2 in the fraction). Domain [0, 1]^2
+/// (outside clamped, NaN → 0); the square's centre → radius 0.
+template <class T> APSE_FUNC ConcentricFold<T> concentric_fold(const glm::vec<2, T>& u) noexcept {
+    const T a = T(2) * clamp(u.x, T(0), T(1)) - T(1);
+    const T b = T(2) * clamp(u.y, T(0), T(1)) - T(1);
+    const T fa = std::fabs(a), fb = std::fabs(b);
+    const T m = max_of(fa, fb);
+    // (|B| − |A|)/(2M) with the centre (0/0) sent to 0: away from the centre M >= 2^-53 (a and b
+    // are multiples of 2^-53), so the divisor is 2M itself there.
+    const T fraction = T(0.5) + (fb - fa) / max_of(m + m, T(0x1p-64));
+    return {{std::copysign(T(1), a), std::copysign(T(1), b), clamp(fraction, T(0), T(1))}, m * m};
 }
 
 /// A point of the unit disk in signed polar form: radius (cos angle, sin angle) with `radius`

@@ -21,6 +21,14 @@ struct MapAccess {
         return map.local_coordinates(l);
     }
 
+    /// map.sample_folded(fold, u2, iterations): RadialMap's / TabulatedMap's sample at the
+    /// quadrant and quadrant-area fraction `fold` and the radial fraction u2 (the LD-radial
+    /// composition's entry, maps/ld_radial.hpp).
+    template <class Map, class Fold, class T>
+    static APSE_FUNC auto sample_folded(const Map& map, const Fold& fold, T u2, int& iterations) noexcept {
+        return map.sample_folded(fold, u2, iterations);
+    }
+
     /// map.solve_quadrant(f, iterations): RadialMap's boundary state at the fraction f of the
     /// quadrant's area, with the inversion iterations.
     template <class Map, class T>

@@ -48,8 +48,12 @@ APSE_FUNC T estrin8(T y, T c0, T c1, T c2, T c3, T c4, T c5, T c6, T c7, T c8) n
 /// few ulps of the correctly rounded one (measured: 1.3 eps absolute in double, 0.8 eps in float),
 /// both values in [0, 1].
 template <class T> APSE_FUNC SinCosValues<T> sin_cos_quarter_turn(T q) noexcept {
+    // Without branches (q is a random sample's, and a 50/50 branch is mispredicted half the
+    // time): r = min(q, 1 − q) and the final swap, both by mask blends (detail/pairs.hpp; a
+    // compiler merges a plain min with the swap's test into one branch).
     const bool flip = q > T(0.5);
-    const T r = flip ? T(1) - q : q;
+    T r = q, other = T(1) - q;
+    swap_if(flip, r, other);
     const T x = r * half_pi_v<T>, x2 = x * x;
     T s, c;
     if constexpr (sizeof(T) == sizeof(float)) {
@@ -62,7 +66,8 @@ template <class T> APSE_FUNC SinCosValues<T> sin_cos_quarter_turn(T q) noexcept 
         c = estrin8(x2, T(1), T(-0.5), T(1.0 / 24), T(-1.0 / 720), T(1.0 / 40320), T(-1.0 / 3628800),
                     T(1.0 / 479001600), T(-1.0 / 87178291200.0), T(1.0 / 20922789888000.0));
     }
-    return flip ? SinCosValues<T>{c, s} : SinCosValues<T>{s, c};
+    swap_if(flip, s, c);
+    return {s, c};
 }
 
 /// atan(z) for z in [0, 1], absolute error below 2e-8 (Hastings' degree-17 odd polynomial,

@@ -53,7 +53,8 @@ template <class T> APSE_FUNC glm::vec<3, T> normalize_direction(const glm::vec<3
 
 /// A point of [0, 1] folded onto one quadrant.
 template <class T> struct QuadrantFold {
-    int quadrant;  ///< 0..3, counter-clockwise from the +x (major) axis
+    T sign_x;      ///< ±1: the quadrant as the signs of its x and y (counter-clockwise from the +x
+    T sign_y;      ///< (major) axis: q = 0 (+, +), 1 (−, +), 2 (−, −), 3 (+, −))
     T fraction;    ///< fraction of the quadrant's area, measured from the major axis, in [0, 1]
 };
 
@@ -63,11 +64,13 @@ template <class T> struct QuadrantFold {
 /// Exact in floating point (4 u1 and 4 u1 − q are exact; 1 − f is exact for f in [1/2, 1] and
 /// correctly rounded otherwise).
 template <class T> APSE_FUNC QuadrantFold<T> fold_quadrant(T u1) noexcept {
-    const T s = T(4) * u1;
-    int q = s >= T(3) ? 3 : (s >= T(2) ? 2 : (s >= T(1) ? 1 : 0));
-    T f = s - T(q);
-    if (q & 1) f = T(1) - f;
-    return {q, clamp(f, T(0), T(1))};
+    // Written without branches (a random u1's quadrant is unpredictable): q & 1 selects the
+    // reflection, bit 1 of q + 1 the sign of x (q = 1, 2) and bit 1 of q the sign of y (q = 2, 3).
+    const T s = T(4) * clamp(u1, T(0), T(1));
+    const int q = int(min_of(s, T(3)));
+    const T odd = T(q & 1);
+    const T f = odd + (T(1) - T(2) * odd) * (s - T(q));  // s − q, or 1 − (s − q) in odd quadrants
+    return {T(1 - ((q + 1) & 2)), T(1 - (q & 2)), clamp(f, T(0), T(1))};
 }
 
 /// Inverse of fold_quadrant: (q, f) → u1 = (q + f)/4 (q even) or (q + 1 − f)/4 (q odd).
@@ -75,14 +78,15 @@ template <class T> APSE_FUNC T unfold_quadrant_fraction(int q, T f) noexcept {
     return ((q & 1) ? (T(q + 1) - f) : (T(q) + f)) * T(0.25);
 }
 
-/// Maps a first-quadrant local (x >= 0, y >= 0) onto quadrant q by the reflections
-/// (x, y) → (±x, ±y): q = 0 (+,+), 1 (−,+), 2 (−,−), 3 (+,−). Exact.
-template <class T> APSE_FUNC glm::vec<3, T> place_in_quadrant(int q, T x, T y, T z) noexcept {
-    return glm::vec<3, T>((q == 1 || q == 2) ? -x : x, (q >= 2) ? -y : y, z);
+/// Maps a first-quadrant local (x >= 0, y >= 0) onto the quadrant of `fold` by the reflections
+/// (x, y) → (±x, ±y): (sign_x x, sign_y y, z). Exact (and free of branches).
+template <class T>
+APSE_FUNC glm::vec<3, T> place_in_quadrant(const QuadrantFold<T>& fold, T x, T y, T z) noexcept {
+    return glm::vec<3, T>(fold.sign_x * x, fold.sign_y * y, z);
 }
 
 /// Quadrant of a local direction (the inverse of place_in_quadrant): q such that
-/// place_in_quadrant(q, |x|, |y|, z) gives back (x, y, z). Points on the axes go to the quadrant
+/// the reflections of quadrant q (fold_quadrant) take (|x|, |y|) back to (x, y). Points on the axes go to the quadrant
 /// for which the fraction is 0 or 1 consistently with fold_quadrant (+x axis → q = 0 with f = 0,
 /// +y → q = 0 with f = 1, −x → q = 1 with f = 0, −y → q = 2 with f = 1: the same u1
 /// as the neighbouring quadrant would give).

@@ -11,9 +11,9 @@
 ///
 /// The composition itself (namespace detail: ld_sample, ld_invert) is written once for
 /// LdRadialMap (over RadialMap) and TabulatedLdRadialMap (over TabulatedMap, tabulated.hpp):
-/// `Radial` provides `ellipse()`, the counting sample (reached through DiagnosticsAccess,
-/// sample.hpp) and `local_coordinates(l)` (docs/math.md §4 inverse on the unit local direction l;
-/// reached through MapAccess, detail/map_access.hpp). The concentric map preserves area, so the
+/// `Radial` provides `ellipse()`, `sample_folded(fold, u2, iterations)` (the sample at a quadrant
+/// and its area fraction) and `local_coordinates(l)` (docs/math.md §4 inverse on the unit local
+/// direction l), both reached through MapAccess (detail/map_access.hpp). The concentric map preserves area, so the
 /// composition has the radial map's density.
 
 #include <cmath>
@@ -34,7 +34,8 @@ namespace detail {
 /// sample() of the LD composition over `radial` (`valid`: the radial map can sample). u is
 /// clamped into [0, 1]^2; a NaN coordinate or !valid gives pdf 0 and the centre direction, with
 /// `iterations` = 0; otherwise the radial map's sample at (turns, radius^2) of the concentric
-/// image of u (already in [0, 1]^2), its pdf and its `iterations`.
+/// image of u, its pdf and its `iterations` (the turns folded onto a quadrant directly from u,
+/// detail::concentric_fold: no branches).
 template <class T, class Radial>
 APSE_FUNC DirectionSample<T> ld_sample(const Radial& radial, bool valid, const glm::vec<2, T>& u,
                                        int& iterations) noexcept {
@@ -42,8 +43,8 @@ APSE_FUNC DirectionSample<T> ld_sample(const Radial& radial, bool valid, const g
     bool ok = valid;
     const glm::vec<2, T> uc = clamp_unit(u, ok);
     if (!ok) return {radial.ellipse().z, T(0)};
-    const ConcentricPolar<T> disk = concentric_to_disk(uc);
-    return DiagnosticsAccess::sample(radial, glm::vec<2, T>(disk.turns, disk.radius * disk.radius), iterations);
+    const ConcentricFold<T> disk = concentric_fold(uc);
+    return MapAccess::sample_folded(radial, disk.fold, disk.radius2, iterations);
 }
 
 /// invert() of the LD composition over `radial`: the radial map's (u1, u2) of the world-space

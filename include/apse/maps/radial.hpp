@@ -38,8 +38,8 @@ namespace detail {
 /// sin theta / r = sqrt(u2 (2 − v)/(1 + C)), v = 1 − cos theta. u2 = 0 gives the centre, u2 = 1
 /// the boundary point. `inv_1pc` = 1/(1 + C) (the caller may have it from a paired division).
 template <class T>
-APSE_FUNC glm::vec<3, T> radial_direction(const EllipseAreas<T>& k, int q, T ct, T st, T c, T inv_1pc,
-                                          T u2) noexcept {
+APSE_FUNC glm::vec<3, T> radial_direction(const EllipseAreas<T>& k, const QuadrantFold<T>& q, T ct, T st, T c,
+                                          T inv_1pc, T u2) noexcept {
     const T ax = k.a * ct, by = k.b * st;
     const T r2 = ax * ax + by * by;
     // v = 1 − cos theta = u2 r^2/(1 + C); sin theta / r = sqrt(v (2 − v))/r = sqrt(u2 (2 − v)/(1 + C)):
@@ -51,7 +51,8 @@ APSE_FUNC glm::vec<3, T> radial_direction(const EllipseAreas<T>& k, int q, T ct,
 
 /// radial_direction with 1/(1 + C) computed here (one division).
 template <class T>
-APSE_FUNC glm::vec<3, T> radial_direction(const EllipseAreas<T>& k, int q, T ct, T st, T c, T u2) noexcept {
+APSE_FUNC glm::vec<3, T> radial_direction(const EllipseAreas<T>& k, const QuadrantFold<T>& q, T ct, T st, T c,
+                                          T u2) noexcept {
     return radial_direction(k, q, ct, st, c, T(1) / (T(1) + c), u2);
 }
 
@@ -156,12 +157,13 @@ private:
     friend struct detail::DiagnosticsAccess;
     friend struct detail::MapAccess;
 
-    /// The local-frame direction (x along the major axis, z the centre) for
-    /// (u1, u2) in [0, 1]^2 (not checked), with the inversion iterations in `iterations`.
-    APSE_FUNC vec3 local_direction(T u1, T u2, int& iterations) const noexcept {
-        const detail::QuadrantFold<T> fold = detail::fold_quadrant(u1);
+    /// The world-space sample for the quadrant and quadrant-area fraction `fold` and the radial
+    /// fraction u2 in [0, 1] (not checked; the map is valid), with the inversion iterations in
+    /// `iterations`: sample() after fold_quadrant(u1), LdRadialMap's after the concentric map.
+    APSE_HOT_INLINE DirectionSample<T> sample_folded(const detail::QuadrantFold<T>& fold, T u2,
+                                               int& iterations) const noexcept {
         const detail::RadialPoint<T> p = solve_quadrant(fold.fraction, iterations);
-        return detail::radial_direction(areas_, fold.quadrant, p.ct, p.st, p.c_max, u2);
+        return {ellipse_.to_world(detail::radial_direction(areas_, fold, p.ct, p.st, p.c_max, u2)), inv_omega_};
     }
 
     /// (u1, u2) of the unit local direction `l` (clamped to [0, 1]^2): invert() and LdRadialMap's
@@ -226,7 +228,7 @@ private:
         bool ok = valid_;
         const vec2 uc = detail::clamp_unit(u, ok);
         if (!ok) return {ellipse_.z, T(0)};
-        return {ellipse_.to_world(local_direction(uc.x, uc.y, iterations)), inv_omega_};
+        return sample_folded(detail::fold_quadrant(uc.x), uc.y, iterations);
     }
 
     SphericalEllipse<T> ellipse_;

@@ -146,10 +146,10 @@ private:
     friend struct detail::DiagnosticsAccess;
     friend struct detail::MapAccess;
 
-    /// The local-frame direction for (u1, u2) in [0, 1]^2 (not checked), its
-    /// solid-angle density in `pdf` and the table-walk steps in `steps`.
-    APSE_FUNC vec3 local_direction(T u1, T u2, T& pdf, int& steps) const noexcept {
-        const detail::QuadrantFold<T> fold = detail::fold_quadrant(u1);
+    /// The world-space sample for the quadrant and quadrant-area fraction `fold` and the radial
+    /// fraction u2 in [0, 1] (not checked; the map is valid), with the table-walk steps in
+    /// `steps`: sample() after fold_quadrant(u1), TabulatedLdRadialMap's after the concentric map.
+    APSE_HOT_INLINE DirectionSample<T> sample_folded(const detail::QuadrantFold<T>& fold, T u2, int& steps) const noexcept {
         const T f = fold.fraction;
         // the bin k with F(k) <= f < F(k + 1) (F(0) = 0, F(N) = 1 up to rounding; f >= F(N) gives
         // the last bin): the blended CDF is within a few % of linear in lambda, so start at the
@@ -184,8 +184,8 @@ private:
         T inv_n, inv_1pc;  // 1/n and 1/(1 + C) = n/(n + n C), paired
         detail::div2(T(1), n, n, n + nc, inv_n, inv_1pc);
         const T ct = px * inv_n, st = py * inv_n, c = nc * inv_n;
-        pdf = density(df, ct, st, c);
-        return detail::radial_direction(areas_, fold.quadrant, ct, st, c, inv_1pc, u2);  // as RadialMap
+        return {ellipse_.to_world(detail::radial_direction(areas_, fold, ct, st, c, inv_1pc, u2)),  // as RadialMap
+                density(df, ct, st, c)};
     }
 
     /// (u1, u2) of the unit local direction `l` (clamped to [0, 1]^2): invert() and
@@ -214,9 +214,7 @@ private:
         bool ok = valid_;
         const vec2 uc = detail::clamp_unit(u, ok);
         if (!ok) return {ellipse_.z, T(0)};
-        T pdf = T(0);
-        const vec3 l = local_direction(uc.x, uc.y, pdf, iterations);
-        return {ellipse_.to_world(l), pdf};
+        return sample_folded(detail::fold_quadrant(uc.x), uc.y, iterations);
     }
 
     struct Azimuth {
