@@ -7,10 +7,12 @@
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <limits>
 #include <random>
+#include <vector>
 
 namespace {
 
@@ -74,6 +76,47 @@ TEMPLATE_TEST_CASE("concentric map: ranges, centre, boundary, round trip", "[are
     const vec2<T> r = apse::detail::concentric_from_disk(T(3), T(-0.25));  // clamped, reduced mod 1
     CHECK(r.x == T(0.5));
     CHECK(r.y == T(0));
+}
+
+TEMPLATE_TEST_CASE("concentric_fold: the concentric point's quadrant, quarter-turn fraction and radius^2", "[area][concentric]", float, double) {
+    using T = TestType;
+    const long double eps = apse::epsilon<T>();
+    // Reference in long double from the Shirley–Chiu definition: A = 2u1 − 1, B = 2u2 − 1; the
+    // angle from the x axis of the first-quadrant image is (pi/4)|B|/|A| (|A| > |B|) or
+    // pi/2 − (pi/4)|A|/|B|, i.e. the fraction |B|/(2|A|) or 1 − |A|/(2|B|) of the quarter turn.
+    std::vector<T> grid;
+    const int n = 64;
+    for (int i = 0; i <= n; ++i) grid.push_back(T(i) / T(n));
+    for (T b : {T(0.5), T(0.25), T(0.75)}) {
+        grid.push_back(std::nextafter(b, T(0)));
+        grid.push_back(std::nextafter(b, T(1)));
+    }
+    for (const T x : grid) {
+        for (const T y : grid) {
+            const auto f = apse::detail::concentric_fold(vec2<T>(x, y));
+            const long double a = 2.0L * x - 1, b = 2.0L * y - 1, fa = std::fabs(a), fb = std::fabs(b);
+            const long double m = std::max(fa, fb);
+            CHECK(f.radius2 == T(m * m));  // exact: m is exact and m^2 rounds once, like the reference
+            if (m == 0) {
+                CHECK(f.fold.fraction == T(0.5));  // the centre: any angle, radius 0
+                continue;
+            }
+            const long double ref = fa > fb ? fb / (2 * fa) : 1 - fa / (2 * fb);
+            // three roundings (|B| − |A|, the quotient, the sum with 1/2), each at most half an
+            // ulp of a value <= 1: 1.5 eps; 2 eps
+            CHECK(std::fabs(f.fold.fraction - ref) <= 2 * eps);
+            if (a != 0) CHECK(f.fold.sign_x == (a > 0 ? T(1) : T(-1)));
+            if (b != 0) CHECK(f.fold.sign_y == (b > 0 ? T(1) : T(-1)));
+            // the same point as the polar form folded by fold_quadrant (the LD-radial maps' old path)
+            const auto p = apse::detail::concentric_to_disk(vec2<T>(x, y));
+            const auto g = apse::detail::fold_quadrant(p.turns);
+            CHECK(std::fabs(g.fraction - f.fold.fraction) <= 8 * eps);  // turns rounded through 1/8, +1, ×4
+            if (ref > 8 * eps && ref < 1 - 8 * eps) {
+                CHECK(g.sign_x == f.fold.sign_x);
+                CHECK(g.sign_y == f.fold.sign_y);
+            }
+        }
+    }
 }
 
 TEMPLATE_TEST_CASE("concentric map is area-preserving and continuous", "[area][concentric]", float, double) {

@@ -64,17 +64,17 @@ template <class T> struct ConcentricFold {
 /// M = max(|A|, |B|), and the angle from the x axis is (pi/4)|B|/|A| (|A| > |B|) or
 /// pi/2 − (pi/4)|A|/|B|: the fraction of the quarter turn is |B|/(2|A|) or 1 − |A|/(2|B|), both
 /// 1/2 + (|B| − |A|)/(2M). The same point as fold_quadrant(concentric_to_disk(u).turns) up to
-/// rounding (an absolute error of about one ulp of 1/2 in the fraction). Domain [0, 1]^2
-/// (outside clamped, NaN → 0); the square's centre → radius 0.
+/// rounding (an absolute error of about one ulp of 1/2 in the fraction). u in [0, 1]^2, not
+/// checked (the caller clamps: clamp_unit); the square's centre → radius 0.
 template <class T> APSE_FUNC ConcentricFold<T> concentric_fold(const glm::vec<2, T>& u) noexcept {
-    const T a = T(2) * clamp(u.x, T(0), T(1)) - T(1);
-    const T b = T(2) * clamp(u.y, T(0), T(1)) - T(1);
+    const T a = T(2) * u.x - T(1);
+    const T b = T(2) * u.y - T(1);
     const T fa = std::fabs(a), fb = std::fabs(b);
     const T m = max_of(fa, fb);
     // (|B| − |A|)/(2M) with the centre (0/0) sent to 0: away from the centre M >= 2^-53 (a and b
     // are multiples of 2^-53), so the divisor is 2M itself there.
     const T fraction = T(0.5) + (fb - fa) / max_of(m + m, T(0x1p-64));
-    return {{std::copysign(T(1), a), std::copysign(T(1), b), clamp(fraction, T(0), T(1))}, m * m};
+    return {{std::copysign(T(1), a), std::copysign(T(1), b), clamp_non_nan(fraction, T(0), T(1))}, m * m};
 }
 
 /// A point of the unit disk in signed polar form: radius (cos angle, sin angle) with `radius`

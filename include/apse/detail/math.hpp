@@ -106,6 +106,11 @@ template <class T> APSE_FUNC T clamp(T x, T lo, T hi) noexcept {
     return is_nan(x) ? lo : (x > lo ? (x < hi ? x : hi) : lo);
 }
 
+/// x clamped to [lo, hi] for an x that is not NaN (by construction, or tested before): a max and
+/// a min (maxss/minss on x86), without clamp's test of the bits. The sampling paths' clamps
+/// after their input has been checked.
+template <class T> APSE_FUNC constexpr T clamp_non_nan(T x, T lo, T hi) noexcept { return min_of(max_of(x, lo), hi); }
+
 /// sqrt(max(x, 0)): for quantities that are non-negative in exact arithmetic but may round
 /// slightly below zero. NaN stays NaN.
 template <class T> APSE_FUNC T safe_sqrt(T x) noexcept { return std::sqrt(x < T(0) ? T(0) : x); }

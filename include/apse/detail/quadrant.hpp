@@ -29,8 +29,9 @@ namespace detail {
 
 /// x clamped to [0, 1]; `ok` is cleared when x is NaN (the caller then reports "no sample").
 template <class T> APSE_FUNC T clamp_unit(T x, bool& ok) noexcept {
-    if (is_nan(x)) ok = false;
-    return clamp(x, T(0), T(1));
+    const bool nan = is_nan(x);
+    if (nan) ok = false;
+    return nan ? T(0) : clamp_non_nan(x, T(0), T(1));
 }
 
 /// The point u of the square with both coordinates through clamp_unit (x first, then y).
@@ -61,16 +62,14 @@ template <class T> struct QuadrantFold {
 /// u1 in [0, 1] → quadrant q = floor(4 u1) (u1 = 1 belongs to quadrant 3) and the fraction
 /// f = 4 u1 − q, reflected (1 − f) in the odd quadrants: f is then always measured from the major
 /// axis, and azimuth = q pi/2 + phi0 (q even) or (q + 1) pi/2 − phi0 (q odd) is continuous in u1.
-/// Exact in floating point (4 u1 and 4 u1 − q are exact; 1 − f is exact for f in [1/2, 1] and
-/// correctly rounded otherwise).
+/// Without branches (a random u1's quadrant is unpredictable): f is the triangle wave
+/// 1 − |1 − |4 u1 − 2|| (exact for u1 >= 1/4; below, within one rounding of 2, 2^-52 in double),
+/// y < 0 in the lower half (u1 >= 1/2) and x < 0 in the middle quadrants (|4 u1 − 2| < 1; on
+/// their boundaries the point is on an axis, where that sign multiplies zero).
 template <class T> APSE_FUNC QuadrantFold<T> fold_quadrant(T u1) noexcept {
-    // Written without branches (a random u1's quadrant is unpredictable): q & 1 selects the
-    // reflection, bit 1 of q + 1 the sign of x (q = 1, 2) and bit 1 of q the sign of y (q = 2, 3).
-    const T s = T(4) * clamp(u1, T(0), T(1));
-    const int q = int(min_of(s, T(3)));
-    const T odd = T(q & 1);
-    const T f = odd + (T(1) - T(2) * odd) * (s - T(q));  // s − q, or 1 − (s − q) in odd quadrants
-    return {T(1 - ((q + 1) & 2)), T(1 - (q & 2)), clamp(f, T(0), T(1))};
+    const T g = std::fabs(T(4) * clamp(u1, T(0), T(1)) - T(2));  // distance from the −x axis, [0, 2]
+    const T f = T(1) - std::fabs(T(1) - g);
+    return {std::copysign(T(1), g - T(1)), std::copysign(T(1), T(0.5) - u1), clamp_non_nan(f, T(0), T(1))};
 }
 
 /// Inverse of fold_quadrant: (q, f) → u1 = (q + f)/4 (q even) or (q + 1 − f)/4 (q odd).

@@ -172,7 +172,7 @@ private:
             f1 = cdf_at(lo + 1);
         }
         const T df = f1 - f0;
-        const T s = df > T(0) ? detail::clamp((f - f0) / df, T(0), T(1)) : T(0);
+        const T s = df > T(0) ? detail::clamp_non_nan((f - f0) / df, T(0), T(1)) : T(0);
         // lambda = (lo + s) pi/(2N); tan tau = kappa tan lambda;
         // (cos tau, sin tau) = (cos lambda, kappa sin lambda)/n
         const detail::SinCosValues<T> sc = detail::sin_cos_quarter_turn(detail::min_of((T(lo) + s) * inv_bins_, T(1)));
