@@ -679,3 +679,25 @@ TEST_CASE("projected-solid-angle sampler: a density beyond float's range is decl
     INFO(declined << " of 4096 declined");
     CHECK(declined < 4096 / 10);  // measured 128: the ends of the arc only
 }
+
+TEMPLATE_TEST_CASE("a normal with subnormal components in the ellipse's frame still gives unit directions", "[cosine][robust]", float, double) {
+    using T = TestType;
+    using V3 = glm::vec<3, T>;
+    // Found by fuzz_shapes: a huge normal (−DBL_MAX along z, −1e-12 along y) is, once
+    // normalised and in the ellipse's frame, ~1e-320 in two components; the horizon's sine and
+    // cosine from those subnormals were 0.04 % off a unit pair, and so were the directions near
+    // the range's end (u2 = 1). Unit to rounding now (directions: 64 eps as everywhere).
+    const auto e = apse::project_ellipse(V3(T(3), T(1e-30), T(3)), V3(T(3.14159265358979), T(3), T(3)),
+                                         V3(T(2), T(-4), T(0)), V3(T(0), T(0), T(-1)));
+    const V3 n(T(0), T(-1e-12), -std::numeric_limits<T>::max());
+    const apse::CosineWeighted<apse::RadialMap<T>> s(apse::RadialMap<T>(e), n);
+    REQUIRE(s.weighted());
+    const T tiny = std::numeric_limits<T>::min();
+    for (const T u1 : {tiny, T(1e-6), T(0.25), T(0.5), T(0.999)}) {
+        for (const T u2 : {T(0), T(0.5), T(1)}) {
+            const auto smp = s.sample(glm::vec<2, T>(u1, u2));
+            CHECK(apse::detail::is_finite(smp.pdf));
+            if (smp.pdf > T(0)) CHECK(std::fabs(glm::length(smp.direction) - T(1)) <= T(64) * apse::epsilon<T>());
+        }
+    }
+}

@@ -87,6 +87,12 @@ template <class T> APSE_FUNC T psa_cdf(const PsaRay<T>& r, T d, T s, T c) noexce
     return T(0.5) * (r.a * sk * sk + r.b * angle_minus_sin_cos(d, s, c, r.k));
 }
 
+/// Below this (2^-900 in double, 2^-100 in float) psa_ray rescales n_z and s by its inverse, an
+/// exact power of two, before taking their ratios.
+template <class T> APSE_FUNC constexpr T psa_tiny() noexcept {
+    return sizeof(T) == sizeof(float) ? T(0x1p-100) : T(0x1p-900);
+}
+
 /// The ray of the unit horizontal direction (cp, sp) whose rim is at polar angle theta_max
 /// (sin st, cos ct), for the unit normal n (ellipse frame): the range above the horizon and its
 /// conditional density (end and mass: psa_finish); k: the scale of F (PsaRay::k).
@@ -113,10 +119,15 @@ template <class T> APSE_FUNC PsaRay<T> psa_ray(T cp, T sp, T st, T ct, const glm
         const T h = hypot2(n.z, s);
         r.a = -n.z;
         r.kc = h;
-        r.sin0 = -n.z / h;
-        r.cos0 = s / h;
-        r.sin_end = cm / h;  // sin(theta_max − theta_0)
-        r.cos_end = (ct * s - st * n.z) / h;
+        // The sines and cosines are ratios of n_z and s. Subnormal ones (a normal whose components
+        // here are ~1e-320) hold too few digits for a unit pair: rescale them exactly by a power
+        // of two first.
+        const T up = h < psa_tiny<T>() ? T(1) / psa_tiny<T>() : T(1);
+        const T nz = n.z * up, sv = s * up, hv = hypot2(nz, sv);
+        r.sin0 = -nz / hv;
+        r.cos0 = sv / hv;
+        r.sin_end = (nz * ct + sv * st) / hv;  // sin(theta_max − theta_0): the rim's cosine / h
+        r.cos_end = (ct * sv - st * nz) / hv;
     } else {
         r.valid = false;  // the whole azimuth is below the horizon
     }

@@ -99,12 +99,19 @@ template <class T> APSE_FUNC T angle_of(T s, T c) noexcept {
 /// absolute error of the ratio over theta1 from 1e-12 to pi/2: 3.4e-8 in double, 3.1e-7 in float
 /// (its rounding). 0 if theta1 is 0.
 template <class T> APSE_FUNC T arc_ratio(T s1, T c1, T s2, T c2) noexcept {
+    // the smaller over the larger of each pair, then atan or pi/2 − atan: the choices by mask
+    // blends (swap_if; which is larger depends on the shading point: no branch to mispredict)
     const bool f1 = s1 > c1, f2 = s2 > c2;
+    T n1 = s1, d1 = c1, n2 = s2, d2 = c2;
+    swap_if(f1, n1, d1);
+    swap_if(f2, n2, d2);
     T z1, z2;
-    div2(f1 ? c1 : s1, f1 ? s1 : c1, f2 ? c2 : s2, f2 ? s2 : c2, z1, z2);
-    const T a1 = atan_unit_approx(z1), a2 = atan_unit_approx(z2);
-    const T t1 = f1 ? half_pi_v<T> - a1 : a1, t2 = f2 ? half_pi_v<T> - a2 : a2;
-    return t1 > T(0) ? t2 / t1 : T(0);
+    div2(n1, d1, n2, d2, z1, z2);
+    T a1 = atan_unit_approx(z1), a2 = atan_unit_approx(z2);
+    T b1 = half_pi_v<T> - a1, b2 = half_pi_v<T> - a2;
+    swap_if(f1, a1, b1);
+    swap_if(f2, a2, b2);
+    return a1 > T(0) ? a2 / a1 : T(0);
 }
 
 }  // namespace detail

@@ -85,13 +85,14 @@ public:
         if (!detail::is_finite(pdf_scale_) || !(pdf_scale_ > T(0))) { valid_ = false; pdf_scale_ = T(0); return; }
         // Table coordinates: x = 1 − sqrt(cos alpha), y = beta/alpha (the latter by polynomials,
         // within 1e-7: it only chooses the rows blended, and any blend is exact for the sampler).
-        const T fx = detail::clamp(T(1) - sqrt_ca, T(0), T(1)) * T(table.alpha_nodes - 1);
+        // (a valid ellipse's values: no NaN, so a max and a min clamp them, without branches)
+        const T fx = detail::clamp_non_nan(T(1) - sqrt_ca, T(0), T(1)) * T(table.alpha_nodes - 1);
         const T ratio = detail::arc_ratio(areas_.a, areas_.ca, areas_.b, areas_.cb);
-        const T fy = detail::clamp(ratio, T(0), T(1)) * T(table.ratio_nodes - 1);
+        const T fy = detail::clamp_non_nan(ratio, T(0), T(1)) * T(table.ratio_nodes - 1);
         int i = int(fx), j = int(fy);
         if (i > table.alpha_nodes - 2) i = table.alpha_nodes - 2;
         if (j > table.ratio_nodes - 2) j = table.ratio_nodes - 2;
-        const T wx = detail::clamp(fx - T(i), T(0), T(1)), wy = detail::clamp(fy - T(j), T(0), T(1));
+        const T wx = detail::clamp_non_nan(fx - T(i), T(0), T(1)), wy = detail::clamp_non_nan(fy - T(j), T(0), T(1));
         const int stride = bins_ + 1;
         rows_[0] = table.cdf + (i * table.ratio_nodes + j) * stride;
         rows_[1] = rows_[0] + stride;                          // (i, j + 1)
