@@ -64,8 +64,9 @@ template <class T> struct QuadrantFold {
 /// axis, and azimuth = q pi/2 + phi0 (q even) or (q + 1) pi/2 − phi0 (q odd) is continuous in u1.
 /// Without branches (a random u1's quadrant is unpredictable): f is the triangle wave
 /// 1 − |1 − |4 u1 − 2|| (exact for u1 >= 1/4; below, within one rounding of 2, 2^-52 in double),
-/// y < 0 in the lower half (u1 >= 1/2) and x < 0 in the middle quadrants (|4 u1 − 2| < 1; on
-/// their boundaries the point is on an axis, where that sign multiplies zero).
+/// y < 0 in the lower half (u1 > 1/2) and x < 0 in the middle quadrants (|4 u1 − 2| < 1). On the
+/// quadrants' boundaries (u1 = 1/4, 1/2, 3/4) the point is on an axis, where the sign that
+/// differs from q's multiplies zero.
 template <class T> APSE_FUNC QuadrantFold<T> fold_quadrant(T u1) noexcept {
     const T g = std::fabs(T(4) * clamp(u1, T(0), T(1)) - T(2));  // distance from the −x axis, [0, 2]
     const T f = T(1) - std::fabs(T(1) - g);
@@ -84,8 +85,8 @@ APSE_FUNC glm::vec<3, T> place_in_quadrant(const QuadrantFold<T>& fold, T x, T y
     return glm::vec<3, T>(fold.sign_x * x, fold.sign_y * y, z);
 }
 
-/// Quadrant of a local direction (the inverse of place_in_quadrant): q such that
-/// the reflections of quadrant q (fold_quadrant) take (|x|, |y|) back to (x, y). Points on the axes go to the quadrant
+/// Quadrant of a local direction (the inverse of place_in_quadrant): q such that the reflections
+/// of quadrant q (fold_quadrant) take (|x|, |y|) back to (x, y). Points on the axes go to the quadrant
 /// for which the fraction is 0 or 1 consistently with fold_quadrant (+x axis → q = 0 with f = 0,
 /// +y → q = 0 with f = 1, −x → q = 1 with f = 0, −y → q = 2 with f = 1: the same u1
 /// as the neighbouring quadrant would give).
