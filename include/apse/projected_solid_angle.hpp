@@ -87,10 +87,18 @@ template <class T> APSE_FUNC T psa_cdf(const PsaRay<T>& r, T d, T s, T c) noexce
     return T(0.5) * (r.a * sk * sk + r.b * angle_minus_sin_cos(d, s, c, r.k));
 }
 
-/// Below this (2^-900 in double, 2^-100 in float) psa_ray rescales n_z and s by its inverse, an
-/// exact power of two, before taking their ratios.
-template <class T> APSE_FUNC constexpr T psa_tiny() noexcept {
-    return sizeof(T) == sizeof(float) ? T(0x1p-100) : T(0x1p-900);
+/// (x, y)/h for finite (x, y) with h = hypot(x, y) > 0: a unit pair even when x and y are
+/// subnormal (a normal whose components in the ellipse's frame are ~1e-320), which hold too few
+/// digits for one; they are rescaled exactly by a power of two first.
+template <class T> APSE_FUNC void psa_unit_pair(T x, T y, T h, T& ux, T& uy) noexcept {
+    if (!(h >= safe_scale_min<T>())) {
+        const Pow2Scale<T> sc = pow2_scale_for(h);
+        x = sc(x);
+        y = sc(y);
+        h = hypot2(x, y);
+    }
+    ux = x / h;
+    uy = y / h;
 }
 
 /// The ray of the unit horizontal direction (cp, sp) whose rim is at polar angle theta_max
@@ -111,23 +119,18 @@ template <class T> APSE_FUNC PsaRay<T> psa_ray(T cp, T sp, T st, T ct, const glm
             r.cos_end = ct;
             r.at_rim = true;
         } else {  // the horizon cuts the azimuth at tan theta = n_z / (−s)
-            const T h = hypot2(n.z, s);
-            r.sin_end = n.z / h;
-            r.cos_end = -s / h;
+            psa_unit_pair(n.z, -s, hypot2(n.z, s), r.sin_end, r.cos_end);
         }
     } else if (s > T(0) && cm > T(0)) {
         const T h = hypot2(n.z, s);
         r.a = -n.z;
         r.kc = h;
-        // The sines and cosines are ratios of n_z and s. Subnormal ones (a normal whose components
-        // here are ~1e-320) hold too few digits for a unit pair: rescale them exactly by a power
-        // of two first.
-        const T up = h < psa_tiny<T>() ? T(1) / psa_tiny<T>() : T(1);
-        const T nz = n.z * up, sv = s * up, hv = hypot2(nz, sv);
-        r.sin0 = -nz / hv;
-        r.cos0 = sv / hv;
-        r.sin_end = (nz * ct + sv * st) / hv;  // sin(theta_max − theta_0): the rim's cosine / h
-        r.cos_end = (ct * sv - st * nz) / hv;
+        T c0, s0;  // (cos, sin) of theta_0 = atan(−n_z / s), where the horizon crosses the ray
+        psa_unit_pair(s, -n.z, h, c0, s0);
+        r.sin0 = s0;
+        r.cos0 = c0;
+        r.sin_end = st * c0 - ct * s0;  // sin(theta_max − theta_0): the rim's cosine / h
+        r.cos_end = ct * c0 + st * s0;
     } else {
         r.valid = false;  // the whole azimuth is below the horizon
     }

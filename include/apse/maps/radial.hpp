@@ -31,25 +31,25 @@ namespace detail {
 
 /// The local direction (x along the major axis, z the centre) at the solid-angle fraction u2 in
 /// [0, 1] of the wedge towards the first-quadrant boundary point with orthographic eccentric
-/// anomaly (cos tau, sin tau) = (ct, st) and cos theta_max = c there (k.c_max(ct, st)), reflected
-/// into quadrant q (place_in_quadrant). sin theta_max = r = |(a cos tau, b sin tau)|;
-/// 1 − cos theta = u2 (1 − C), 1 − C = r^2/(1 + C); cos theta = (1 − u2) + u2 C (no cancellation
-/// near the horizon of large ellipses); the in-plane part (ax, by) sin theta / r with
-/// sin theta / r = sqrt(u2 (2 − v)/(1 + C)), v = 1 − cos theta. u2 = 0 gives the centre, u2 = 1
-/// the boundary point. `inv_1pc` = 1/(1 + C) (the caller may have it from a paired division).
+/// anomaly (cos tau, sin tau) = (px, py)/n, given unnormalised (any n > 0: n = 1 for a unit
+/// pair), and cos theta_max = c there (k.c_max), reflected into quadrant q (place_in_quadrant).
+/// `g` = 1/(n^2 (1 + C)) (the caller may have it from a paired or shared division).
+/// sin theta_max = r = |(a cos tau, b sin tau)|; 1 − cos theta = v = u2 (1 − C), 1 − C = r^2/(1 + C),
+/// so v = u2 |(a px, b py)|^2 g; cos theta = (1 − u2) + u2 C (no cancellation near the horizon of
+/// large ellipses); the in-plane part is (a px, b py) sin theta / (n r), with
+/// sin theta / (n r) = sqrt(u2 (2 − v) g): no division here and one square root (r itself is
+/// never needed). u2 = 0 gives the centre, u2 = 1 the boundary point.
 template <class T>
-APSE_FUNC glm::vec<3, T> radial_direction(const EllipseAreas<T>& k, const QuadrantFold<T>& q, T ct, T st, T c,
-                                          T inv_1pc, T u2) noexcept {
-    const T ax = k.a * ct, by = k.b * st;
-    const T r2 = ax * ax + by * by;
-    // v = 1 − cos theta = u2 r^2/(1 + C); sin theta / r = sqrt(v (2 − v))/r = sqrt(u2 (2 − v)/(1 + C)):
-    // no division here and one square root (r itself is never needed).
-    const T v = u2 * (r2 * inv_1pc);
-    const T scale = std::sqrt(u2 * (T(2) - v) * inv_1pc);
+APSE_FUNC glm::vec<3, T> radial_direction(const EllipseAreas<T>& k, const QuadrantFold<T>& q, T px, T py, T c, T g,
+                                          T u2) noexcept {
+    const T ax = k.a * px, by = k.b * py;
+    const T v = u2 * ((ax * ax + by * by) * g);
+    const T scale = std::sqrt(u2 * (T(2) - v) * g);
     return place_in_quadrant(q, ax * scale, by * scale, (T(1) - u2) + u2 * c);
 }
 
-/// radial_direction with 1/(1 + C) computed here (one division).
+/// radial_direction for a unit (cos tau, sin tau) = (ct, st), with 1/(1 + C) computed here (one
+/// division).
 template <class T>
 APSE_FUNC glm::vec<3, T> radial_direction(const EllipseAreas<T>& k, const QuadrantFold<T>& q, T ct, T st, T c,
                                           T u2) noexcept {

@@ -23,7 +23,8 @@
 /// sample is inside the ellipse by construction; one point of the square gives one direction (no
 /// rejection). The density drawn from, in solid angle, is
 ///     pdf(w) = p_lambda(lambda) / (4 (1 − cos theta_max) dphi/dlambda)
-///            = p_lambda(lambda) (1 + C) kappa / (4 a b (kappa^2 cos^2 tau + sin^2 tau)),
+///            = p_lambda(lambda) (1 + C) kappa / (4 a b (kappa^2 cos^2 tau + sin^2 tau))
+///            = p_lambda(lambda) (1 + C) |(cos lambda, kappa sin lambda)|^2 / (4 a b kappa),
 /// with p_lambda = (Delta CDF of the bin)/(bin width): no solid angle, no elliptic integral and
 /// no table accuracy enters the unbiasedness — the table's quality only sets how close pdf is to
 /// 1/Omega (measured max |pdf Omega − 1| in docs/tabulated.md: 0.44 % for the default table).
@@ -76,12 +77,14 @@ public:
         inv_bins_ = T(1) / T(bins_ > 0 ? bins_ : 1);
         pdf_scale_ = T(0);
         if (!valid_) return;
-        // pdf = (dF N) kappa (1 + C) / (2 pi a b (kappa^2 ct^2 + st^2)): the constant part
-        // kappa/(2 pi a b) = (kappa/(2 pi)) (1/a) (1/b), multiplied in this order so that it
-        // neither underflows nor overflows for the smallest ellipses (it is ~1/Omega; dF N is ~1).
-        T inv_a, inv_b;
-        detail::div2(T(1), areas_.a, T(1), areas_.b, inv_a, inv_b);
-        pdf_scale_ = ((kappa_ * (T(1) / two_pi_v<T>)) * inv_a) * inv_b;
+        // pdf = (dF N) (1 + C) n^2 / (2 pi a b kappa), n = |(cos lambda, kappa sin lambda)|
+        // (density()): the constant part
+        // 1/(2 pi a b kappa) = (1/(2 pi)) (1/a) (1/(b kappa)), multiplied in this order so that it
+        // neither underflows nor overflows for the smallest ellipses (it is ~1/Omega; dF N is ~1;
+        // kappa is in [1/sqrt 2, 1]).
+        T inv_a, inv_bk;
+        detail::div2(T(1), areas_.a, T(1), areas_.b * kappa_, inv_a, inv_bk);
+        pdf_scale_ = ((T(1) / two_pi_v<T>) * inv_a) * inv_bk;
         if (!detail::is_finite(pdf_scale_) || !(pdf_scale_ > T(0))) { valid_ = false; pdf_scale_ = T(0); return; }
         // Table coordinates: x = 1 − sqrt(cos alpha), y = beta/alpha (the latter by polynomials,
         // within 1e-7: it only chooses the rows blended, and any blend is exact for the sampler).
@@ -140,7 +143,8 @@ public:
         const vec3 l = ellipse_.to_local(d);
         const Azimuth az = azimuth_of(std::fabs(l.x), std::fabs(l.y));
         const T lo = cdf_at(az.bin), hi = cdf_at(az.bin + 1);
-        return density(hi - lo, az.ct, az.st, areas_.c_max(az.ct, az.st));
+        const T c = areas_.c_max(az.ct, az.st);
+        return density(hi - lo, (T(1) + c) * kappa2_ / (kappa2_ * az.ct * az.ct + az.st * az.st));
     }
 
 private:
@@ -178,15 +182,16 @@ private:
         // (cos tau, sin tau) = (cos lambda, kappa sin lambda)/n
         const detail::SinCosValues<T> sc = detail::sin_cos_quarter_turn(detail::min_of((T(lo) + s) * inv_bins_, T(1)));
         // n = |(px, py)| and n C(tau) = sqrt(cos^2 alpha px^2 + cos^2 beta py^2): one paired square
-        // root, one paired division
+        // root; then one division, g = 1/(n (n + n C)) = 1/(n^2 (1 + C)), gives C and everything
+        // radial_direction needs; the density needs only n^2 (1 + C) (no division)
         const T px = sc.c, py = kappa_ * sc.s, px2 = px * px, py2 = py * py;
         T n, nc;
         detail::sqrt2(px2 + py2, areas_.ca2 * px2 + areas_.cb2 * py2, n, nc);
-        T inv_n, inv_1pc;  // 1/n and 1/(1 + C) = n/(n + n C), paired
-        detail::div2(T(1), n, n, n + nc, inv_n, inv_1pc);
-        const T ct = px * inv_n, st = py * inv_n, c = nc * inv_n;
-        return {ellipse_.to_world(detail::radial_direction(areas_, fold, ct, st, c, inv_1pc, u2)),  // as RadialMap
-                density(df, ct, st, c)};
+        const T n2_1pc = n * (n + nc);
+        const T g = T(1) / n2_1pc;
+        const T c = nc * ((n + nc) * g);  // C = nc / n
+        return {ellipse_.to_world(detail::radial_direction(areas_, fold, px, py, c, g, u2)),  // as RadialMap
+                density(df, n2_1pc)};
     }
 
     /// (u1, u2) of the unit local direction `l` (clamped to [0, 1]^2): invert() and
@@ -238,16 +243,17 @@ private:
         return az;
     }
 
-    /// The blended CDF at node k.
+    /// The blended CDF at node k (summed as a tree: it is on the sample's critical path).
     APSE_FUNC T cdf_at(int k) const noexcept {
-        return weights_[0] * T(rows_[0][k]) + weights_[1] * T(rows_[1][k]) + weights_[2] * T(rows_[2][k]) +
-               weights_[3] * T(rows_[3][k]);
+        return (weights_[0] * T(rows_[0][k]) + weights_[1] * T(rows_[1][k])) +
+               (weights_[2] * T(rows_[2][k]) + weights_[3] * T(rows_[3][k]));
     }
 
-    /// Solid-angle density for a bin of blended mass df at (cos tau, sin tau), C = cos theta_max
-    /// (file comment).
-    APSE_FUNC T density(T df, T ct, T st, T c) const noexcept {
-        const T p = ((df * T(bins_)) * (T(1) + c) / (kappa2_ * ct * ct + st * st)) * pdf_scale_;
+    /// Solid-angle density for a bin of blended mass df at an azimuth where
+    /// w = (1 + C) |(cos lambda, kappa sin lambda)|^2 = (1 + C) kappa^2 / (kappa^2 cos^2 tau + sin^2 tau),
+    /// C = cos theta_max (file comment's pdf; a sample has w without a division).
+    APSE_FUNC T density(T df, T w) const noexcept {
+        const T p = ((df * T(bins_)) * w) * pdf_scale_;
         return detail::is_finite(p) ? detail::max_of(p, T(0)) : T(0);
     }
 
