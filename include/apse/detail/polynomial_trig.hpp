@@ -32,10 +32,17 @@ template <class T> struct SinCosValues {
 };
 
 /// c0 + c1 y + ... + c8 y^8 by Estrin's scheme (depth 5 multiply-adds instead of Horner's 8: the
-/// polynomials below sit on the samplers' critical paths).
+/// polynomials below sit on the samplers' critical paths), for y in [0, 1], c0 = 1 and the other
+/// coefficients below 1 in magnitude. In float the powers y^2, y^4, y^8 (and c8 y^8) would be
+/// subnormal for y below 2^-15 (atan of a ratio below 0.004: the tangent of a far disk's angle),
+/// and each subnormal result costs tens of cycles on x86: there the powers are formed from
+/// max(y, 2^-14) instead (y itself stays exact in the terms c_i y), which moves the sum by at
+/// most (|c2| + |c3|) 2^-28 + 2^-54: 1.3e-9 for atan_unit_approx's coefficients, 0.02 ulp of its
+/// float result.
 template <class T>
 APSE_FUNC T estrin8(T y, T c0, T c1, T c2, T c3, T c4, T c5, T c6, T c7, T c8) noexcept {
-    const T y2 = y * y, y4 = y2 * y2, y8 = y4 * y4;
+    const T yp = sizeof(T) == sizeof(float) ? max_of(y, T(0x1p-14)) : y;
+    const T y2 = yp * yp, y4 = y2 * y2, y8 = y4 * y4;
     const T p01 = c0 + c1 * y, p23 = c2 + c3 * y, p45 = c4 + c5 * y, p67 = c6 + c7 * y;
     const T p03 = p01 + p23 * y2, p47 = p45 + p67 * y2;
     return (p03 + p47 * y4) + c8 * y8;
@@ -57,9 +64,11 @@ template <class T> APSE_FUNC SinCosValues<T> sin_cos_quarter_turn(T q) noexcept 
     const T x = r * half_pi_v<T>, x2 = x * x;
     T s, c;
     if constexpr (sizeof(T) == sizeof(float)) {
-        s = x * (T(1) + x2 * (T(-1.0 / 6) + x2 * (T(1.0 / 120) + x2 * (T(-1.0 / 5040) + x2 * T(1.0 / 362880)))));
-        c = T(1) + x2 * (T(-0.5) + x2 * (T(1.0 / 24) + x2 * (T(-1.0 / 720) + x2 * (T(1.0 / 40320) +
-                                                                             x2 * T(-1.0 / 3628800)))));
+        // Estrin's scheme in x^2 too (depth 3 instead of Horner's 5)
+        const T x4 = x2 * x2;
+        s = x * ((T(1) + T(-1.0 / 6) * x2) + x4 * ((T(1.0 / 120) + T(-1.0 / 5040) * x2) + x4 * T(1.0 / 362880)));
+        c = (T(1) + T(-0.5) * x2) + x4 * ((T(1.0 / 24) + T(-1.0 / 720) * x2) +
+                                          x4 * (T(1.0 / 40320) + T(-1.0 / 3628800) * x2));
     } else {
         s = x * estrin8(x2, T(1), T(-1.0 / 6), T(1.0 / 120), T(-1.0 / 5040), T(1.0 / 362880), T(-1.0 / 39916800),
                         T(1.0 / 6227020800.0), T(-1.0 / 1307674368000.0), T(1.0 / 355687428096000.0));

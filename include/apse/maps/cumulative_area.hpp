@@ -71,12 +71,31 @@ template <class T> struct ParallelPoint {
     T slope;            ///< d density / de
 };
 
-/// Per-ellipse constants of the cumulative areas (set-up: no transcendental call but the one R_J
-/// of the solid angle, done by the caller).
-template <class T> struct EllipseAreas {
+/// The ellipse's semi-axis constants that the polar step of the radial maps needs (the boundary
+/// point of an azimuth and C(tau), maps/radial.hpp): all that the tabulated maps keep.
+template <class T> struct EllipseAxes {
     T a, b;          ///< sin alpha, sin beta
     T ca, cb;        ///< cos alpha, cos beta
     T ca2, cb2;      ///< their squares
+
+    static APSE_FUNC EllipseAxes make(const SphericalEllipse<T>& e) noexcept {
+        return {e.sin_alpha, e.sin_beta, e.cos_alpha, e.cos_beta, e.cos_alpha * e.cos_alpha, e.cos_beta * e.cos_beta};
+    }
+
+    /// C(tau) = cos theta_max from (cos tau, sin tau).
+    APSE_FUNC T c_max(T ct, T st) const noexcept { return std::sqrt(ca2 * ct * ct + cb2 * st * st); }
+};
+
+/// Per-ellipse constants of the cumulative areas (set-up: no transcendental call but the one R_J
+/// of the solid angle, done by the caller).
+template <class T> struct EllipseAreas : EllipseAxes<T> {
+    using EllipseAxes<T>::a;
+    using EllipseAxes<T>::b;
+    using EllipseAxes<T>::ca;
+    using EllipseAxes<T>::cb;
+    using EllipseAxes<T>::ca2;
+    using EllipseAxes<T>::cb2;
+    using EllipseAxes<T>::c_max;
     T a2, b2, ab;    ///< a^2, b^2, a b
     T a2_minus_b2;   ///< a^2 − b^2 = cos^2 beta − cos^2 alpha, no cancellation
     T tb2;           ///< tan^2 beta
@@ -88,12 +107,7 @@ template <class T> struct EllipseAreas {
 
     static APSE_FUNC EllipseAreas make(const SphericalEllipse<T>& e) noexcept {
         EllipseAreas k;
-        k.a = e.sin_alpha;
-        k.b = e.sin_beta;
-        k.ca = e.cos_alpha;
-        k.cb = e.cos_beta;
-        k.ca2 = k.ca * k.ca;
-        k.cb2 = k.cb * k.cb;
+        static_cast<EllipseAxes<T>&>(k) = EllipseAxes<T>::make(e);
         k.a2 = k.a * k.a;
         k.b2 = k.b * k.b;
         k.ab = k.a * k.b;
@@ -122,9 +136,6 @@ template <class T> struct EllipseAreas {
         const T term2 = std::atan2(ba * st * ct * (tb2 * c2 + m * ct2) / (T(1) + c), ct2 + ba2 * c * st2);
         return term1 + term2;
     }
-
-    /// C(tau) = cos theta_max from (cos tau, sin tau).
-    APSE_FUNC T c_max(T ct, T st) const noexcept { return std::sqrt(ca2 * ct * ct + cb2 * st * st); }
 
     /// The radial state at tau with known cos tau, sin tau (>= 0).
     APSE_FUNC RadialPoint<T> radial_point(T tau, T ct, T st) const noexcept {

@@ -40,7 +40,7 @@ namespace detail {
 /// sin theta / (n r) = sqrt(u2 (2 − v) g): no division here and one square root (r itself is
 /// never needed). u2 = 0 gives the centre, u2 = 1 the boundary point.
 template <class T>
-APSE_FUNC glm::vec<3, T> radial_direction(const EllipseAreas<T>& k, const QuadrantFold<T>& q, T px, T py, T c, T g,
+APSE_FUNC glm::vec<3, T> radial_direction(const EllipseAxes<T>& k, const QuadrantFold<T>& q, T px, T py, T c, T g,
                                           T u2) noexcept {
     const T ax = k.a * px, by = k.b * py;
     const T v = u2 * ((ax * ax + by * by) * g);
@@ -51,7 +51,7 @@ APSE_FUNC glm::vec<3, T> radial_direction(const EllipseAreas<T>& k, const Quadra
 /// radial_direction for a unit (cos tau, sin tau) = (ct, st), with 1/(1 + C) computed here (one
 /// division).
 template <class T>
-APSE_FUNC glm::vec<3, T> radial_direction(const EllipseAreas<T>& k, const QuadrantFold<T>& q, T ct, T st, T c,
+APSE_FUNC glm::vec<3, T> radial_direction(const EllipseAxes<T>& k, const QuadrantFold<T>& q, T ct, T st, T c,
                                           T u2) noexcept {
     return radial_direction(k, q, ct, st, c, T(1) / (T(1) + c), u2);
 }
@@ -77,7 +77,7 @@ template <class T> struct RadialFraction {
 /// 1 − z = (x^2 + y^2)/(1 + z) and 1 − C = r^2/(1 + C) (both without cancellation). The caller
 /// divides and clamps (and chooses what a zero 1 − C gives).
 template <class T>
-APSE_FUNC RadialFraction<T> radial_fraction(const EllipseAreas<T>& k, T x, T y, T z, T ct, T st, T c) noexcept {
+APSE_FUNC RadialFraction<T> radial_fraction(const EllipseAxes<T>& k, T x, T y, T z, T ct, T st, T c) noexcept {
     const T ax = k.a * ct, by = k.b * st;
     const T one_minus_z = (x * x + y * y) / (T(1) + z);
     const T one_minus_c = (ax * ax + by * by) / (T(1) + c);

@@ -62,20 +62,22 @@ public:
     using vec2 = glm::vec<2, T>;  ///< a point of the unit square
     using vec3 = glm::vec<3, T>;  ///< a 3-D vector (direction, point or normal)
 
-    /// Builds the map for `ellipse` with the table `table` (set-up: the ellipse's cumulative-area
-    /// constants, kappa, the four blended rows and their weights; one sqrt and a few divisions).
+    /// Builds the map for `ellipse` with the table `table` (set-up: the ellipse's semi-axis
+    /// constants, kappa, the four blended rows and their weights; a paired square root and a few
+    /// divisions).
     /// An empty ellipse or an invalid view gives an empty map (every sample has pdf 0).
     APSE_FUNC TabulatedMap(const SphericalEllipse<T>& ellipse, const TabulationView& table) noexcept
-        : ellipse_(ellipse), areas_(detail::EllipseAreas<T>::make(ellipse)), bins_(table.bins) {
+        : ellipse_(ellipse), axes_(detail::EllipseAxes<T>::make(ellipse)), bins_(table.bins) {
         for (int r = 0; r < 4; ++r) { rows_[r] = table.cdf; weights_[r] = T(0); }
         valid_ = !ellipse.empty() && table.cdf != nullptr && table.bins >= 1 && table.alpha_nodes >= 2 &&
                  table.ratio_nodes >= 2 && ellipse.tan_alpha > T(0);
         T sqrt_ca;  // kappa = sqrt((1 + cos alpha)/(1 + cos beta)) and sqrt(cos alpha), paired
-        detail::sqrt2((T(1) + areas_.ca) / (T(1) + areas_.cb), areas_.ca, kappa_, sqrt_ca);
+        detail::sqrt2((T(1) + axes_.ca) / (T(1) + axes_.cb), axes_.ca, kappa_, sqrt_ca);
         kappa2_ = kappa_ * kappa_;
         bin_width_ = half_pi_v<T> / T(bins_ > 0 ? bins_ : 1);
         inv_bins_ = T(1) / T(bins_ > 0 ? bins_ : 1);
         pdf_scale_ = T(0);
+        ba_ = T(0);
         if (!valid_) return;
         // pdf = (dF N) (1 + C) n^2 / (2 pi a b kappa), n = |(cos lambda, kappa sin lambda)|
         // (density()): the constant part
@@ -83,14 +85,15 @@ public:
         // neither underflows nor overflows for the smallest ellipses (it is ~1/Omega; dF N is ~1;
         // kappa is in [1/sqrt 2, 1]).
         T inv_a, inv_bk;
-        detail::div2(T(1), areas_.a, T(1), areas_.b * kappa_, inv_a, inv_bk);
+        detail::div2(T(1), axes_.a, T(1), axes_.b * kappa_, inv_a, inv_bk);
         pdf_scale_ = ((T(1) / two_pi_v<T>) * inv_a) * inv_bk;
+        ba_ = axes_.b * inv_a;
         if (!detail::is_finite(pdf_scale_) || !(pdf_scale_ > T(0))) { valid_ = false; pdf_scale_ = T(0); return; }
         // Table coordinates: x = 1 − sqrt(cos alpha), y = beta/alpha (the latter by polynomials,
         // within 1e-7: it only chooses the rows blended, and any blend is exact for the sampler).
         // (a valid ellipse's values: no NaN, so a max and a min clamp them, without branches)
         const T fx = detail::clamp_non_nan(T(1) - sqrt_ca, T(0), T(1)) * T(table.alpha_nodes - 1);
-        const T ratio = detail::arc_ratio(areas_.a, areas_.ca, areas_.b, areas_.cb);
+        const T ratio = detail::arc_ratio(axes_.a, axes_.ca, axes_.b, axes_.cb);
         const T fy = detail::clamp_non_nan(ratio, T(0), T(1)) * T(table.ratio_nodes - 1);
         int i = int(fx), j = int(fy);
         if (i > table.alpha_nodes - 2) i = table.alpha_nodes - 2;
@@ -143,7 +146,7 @@ public:
         const vec3 l = ellipse_.to_local(d);
         const Azimuth az = azimuth_of(std::fabs(l.x), std::fabs(l.y));
         const T lo = cdf_at(az.bin), hi = cdf_at(az.bin + 1);
-        const T c = areas_.c_max(az.ct, az.st);
+        const T c = axes_.c_max(az.ct, az.st);
         return density(hi - lo, (T(1) + c) * kappa2_ / (kappa2_ * az.ct * az.ct + az.st * az.st));
     }
 
@@ -186,11 +189,11 @@ private:
         // radial_direction needs; the density needs only n^2 (1 + C) (no division)
         const T px = sc.c, py = kappa_ * sc.s, px2 = px * px, py2 = py * py;
         T n, nc;
-        detail::sqrt2(px2 + py2, areas_.ca2 * px2 + areas_.cb2 * py2, n, nc);
+        detail::sqrt2(px2 + py2, axes_.ca2 * px2 + axes_.cb2 * py2, n, nc);
         const T n2_1pc = n * (n + nc);
         const T g = T(1) / n2_1pc;
         const T c = nc * ((n + nc) * g);  // C = nc / n
-        return {ellipse_.to_world(detail::radial_direction(areas_, fold, px, py, c, g, u2)),  // as RadialMap
+        return {ellipse_.to_world(detail::radial_direction(axes_, fold, px, py, c, g, u2)),  // as RadialMap
                 density(df, n2_1pc)};
     }
 
@@ -206,8 +209,8 @@ private:
         const T u1 = detail::unfold_quadrant_fraction(q, f);
         T u2 = T(1);
         if (l.z > T(0)) {
-            const T c = areas_.c_max(az.ct, az.st);
-            const detail::RadialFraction<T> r = detail::radial_fraction(areas_, x, y, l.z, az.ct, az.st, c);
+            const T c = axes_.c_max(az.ct, az.st);
+            const detail::RadialFraction<T> r = detail::radial_fraction(axes_, x, y, l.z, az.ct, az.st, c);
             u2 = r.one_minus_c > T(0) ? detail::clamp(r.one_minus_cos / r.one_minus_c, T(0), T(1)) : T(0);
         }
         return vec2(detail::clamp(u1, T(0), T(1)), u2);
@@ -232,7 +235,7 @@ private:
     /// tau and lambda of the first-quadrant local direction (x, y) (x, y >= 0).
     APSE_FUNC Azimuth azimuth_of(T x, T y) const noexcept {
         // tan tau = (a/b) tan phi: (cos tau, sin tau) ∝ ((b/a) x, y)
-        const T bx = areas_.ba * x;
+        const T bx = ba_ * x;
         const T n = std::sqrt(bx * bx + y * y);
         Azimuth az;
         az.ct = n > T(0) ? bx / n : T(1);
@@ -258,7 +261,8 @@ private:
     }
 
     SphericalEllipse<T> ellipse_;
-    detail::EllipseAreas<T> areas_;
+    detail::EllipseAxes<T> axes_;
+    T ba_;  ///< b / a
     const float* rows_[4];
     T weights_[4];
     int bins_;
