@@ -1,6 +1,6 @@
 // Tests of math.hpp (the public constants) and detail/math.hpp: the guarded scalar helpers and the
 // bracketed Newton–bisection root finder; the per-sample pieces written without branches
-// (detail/quadrant.hpp fold_quadrant, detail/polynomial_trig.hpp, detail/pairs.hpp swap_if).
+// (detail/quadrant.hpp fold_quadrant, detail/polynomial_trig.hpp, detail/pairs.hpp swap_if_greater).
 #include <apse/math.hpp>
 #include <apse/detail/pairs.hpp>
 #include <apse/detail/polynomial_trig.hpp>
@@ -164,12 +164,24 @@ TEMPLATE_TEST_CASE("sin_cos_quarter_turn against the C library in long double", 
     CHECK(worst <= 2 * eps);
 }
 
-TEMPLATE_TEST_CASE("swap_if swaps exactly when asked", "[math][pairs]", float, double) {
+TEMPLATE_TEST_CASE("swap_if_greater swaps exactly when a > b", "[math][pairs]", float, double) {
     using T = TestType;
-    for (bool swap : {false, true}) {
-        T x = T(0.1), y = -std::numeric_limits<T>::max();
-        apse::detail::swap_if(swap, x, y);
-        CHECK(x == (swap ? -std::numeric_limits<T>::max() : T(0.1)));
-        CHECK(y == (swap ? T(0.1) : -std::numeric_limits<T>::max()));
+    const T big = std::numeric_limits<T>::max();
+    struct Case {
+        T a, b;
+        bool swap;
+    };
+    std::vector<Case> cases = {{T(1), T(0.5), true}, {T(0.5), T(1), false}, {T(0.5), T(0.5), false},
+                               {T(-0.0), T(0), false}, {big, -big, true}, {T(0.5), std::nextafter(T(0.5), T(0)), true}};
+#if !defined(__FAST_MATH__)  // (NaN is outside -ffast-math's domain)
+    const T nan = std::numeric_limits<T>::quiet_NaN();
+    cases.push_back({nan, T(0), false});
+    cases.push_back({T(0), nan, false});
+#endif
+    for (const Case& c : cases) {
+        T x = T(0.1), y = -big;
+        apse::detail::swap_if_greater(c.a, c.b, x, y);
+        CHECK(x == (c.swap ? -big : T(0.1)));
+        CHECK(y == (c.swap ? T(0.1) : -big));
     }
 }

@@ -8,8 +8,8 @@
 /// on Zen 3), and apse's set-up code and elliptic integrals are bound by it; SSE `sqrtpd`/`divpd`
 /// (`sqrtps`/`divps` in float) compute two lanes for about the price of one (measured: R_F -12%,
 /// R_J -9%, disk projection -6%). The results are bit-identical to the scalar operations (IEEE
-/// square roots and quotients are correctly rounded either way). Also `swap_if`, a pair swapped
-/// on a condition by a mask blend. Elsewhere (CUDA device code, non-x86 hosts, or with
+/// square roots and quotients are correctly rounded either way). Also `swap_if_greater`, a pair
+/// swapped on a comparison by a mask blend. Elsewhere (CUDA device code, non-x86 hosts, or with
 /// `APSE_NO_SIMD` defined) they are the scalar operations.
 
 #include <cmath>
@@ -66,26 +66,28 @@ template <class T> APSE_FUNC void div2(T a, T b, T c, T d, T& qa, T& qc) noexcep
     qc = c / d;
 }
 
-/// (x, y) swapped when `swap`, without a branch where the swap is unpredictable (SSE2: a mask
-/// blend of the pair; compilers turn a plain select or its arithmetic form back into a branch).
-template <class T> APSE_FUNC void swap_if(bool swap, T& x, T& y) noexcept {
+/// (x, y) swapped when a > b (not swapped if a or b is NaN), without a branch: the swap's test is
+/// unpredictable where it is used, and compilers turn a plain select, or its arithmetic form, into
+/// a branch. SSE2: the compare's all-ones/all-zeros lanes are the mask of two and/andnot/or
+/// blends, on broadcast operands (one shuffle each: no lane zeroing, no round trip through an
+/// integer register).
+template <class T> APSE_FUNC void swap_if_greater(T a, T b, T& x, T& y) noexcept {
 #if APSE_PAIRS_SSE2
     if constexpr (sizeof(T) == sizeof(double)) {
-        const __m128d xy = _mm_set_pd(double(y), double(x)), yx = _mm_shuffle_pd(xy, xy, 1);
-        const __m128d mask = _mm_castsi128_pd(_mm_set1_epi64x(-static_cast<long long>(swap)));
-        const __m128d r = _mm_or_pd(_mm_andnot_pd(mask, xy), _mm_and_pd(mask, yx));
-        x = T(_mm_cvtsd_f64(r));
-        y = T(_mm_cvtsd_f64(_mm_unpackhi_pd(r, r)));
+        const __m128d m = _mm_cmpgt_pd(_mm_set1_pd(double(a)), _mm_set1_pd(double(b)));
+        const __m128d vx = _mm_set1_pd(double(x)), vy = _mm_set1_pd(double(y));
+        x = T(_mm_cvtsd_f64(_mm_or_pd(_mm_andnot_pd(m, vx), _mm_and_pd(m, vy))));
+        y = T(_mm_cvtsd_f64(_mm_or_pd(_mm_andnot_pd(m, vy), _mm_and_pd(m, vx))));
         return;
     } else {
-        const __m128 xy = _mm_set_ps(0.0f, 0.0f, float(y), float(x)), yx = _mm_shuffle_ps(xy, xy, 0xe1);
-        const __m128 mask = _mm_castsi128_ps(_mm_set1_epi32(-static_cast<int>(swap)));
-        const __m128 r = _mm_or_ps(_mm_andnot_ps(mask, xy), _mm_and_ps(mask, yx));
-        x = T(_mm_cvtss_f32(r));
-        y = T(_mm_cvtss_f32(_mm_shuffle_ps(r, r, 1)));
+        const __m128 m = _mm_cmpgt_ps(_mm_set1_ps(float(a)), _mm_set1_ps(float(b)));
+        const __m128 vx = _mm_set1_ps(float(x)), vy = _mm_set1_ps(float(y));
+        x = T(_mm_cvtss_f32(_mm_or_ps(_mm_andnot_ps(m, vx), _mm_and_ps(m, vy))));
+        y = T(_mm_cvtss_f32(_mm_or_ps(_mm_andnot_ps(m, vy), _mm_and_ps(m, vx))));
         return;
     }
 #endif
+    const bool swap = a > b;
     const T x0 = x;
     x = swap ? y : x;
     y = swap ? x0 : y;

@@ -7,8 +7,8 @@
 /// argument's range is known (no library call, no range reduction, no branch on the argument's
 /// size; the same code on the host and in CUDA device code):
 ///
-/// * `sin_cos_quarter_turn(q)`: sin and cos of q pi/2 for q in [0, 1], to about one ulp of T
-///   (Taylor polynomials on [0, pi/4], the other half by the exact reflection q → 1 − q);
+/// * `sin_cos_quarter_turn(q)`: sin and cos of q pi/2 for q in [0, 1], within 1.5 eps (Taylor
+///   polynomials of the sine on the whole quarter turn; the cosine as the sine of 1 − q);
 /// * `arc_ratio(s1, c1, s2, c2)`: an approximation of the ratio of two angles in [0, pi/2] given
 ///   by their sines and cosines (Hastings' atan; the ratio within 4e-8 in double, 3e-7 in float):
 ///   a table coordinate, never a result (TabulatedMap's blend of table rows: any value is exact
@@ -48,35 +48,36 @@ APSE_FUNC T estrin8(T y, T c0, T c1, T c2, T c3, T c4, T c5, T c6, T c7, T c8) n
     return (p03 + p47 * y4) + c8 * y8;
 }
 
-/// sin(q pi/2) and cos(q pi/2) for q in [0, 1] (not checked: the caller clamps). q > 1/2 is
-/// reflected exactly (1 − q, Sterbenz) and sine and cosine swapped, so the polynomials see
-/// x = q pi/2 in [0, pi/4] only, where the truncated Taylor series is below 1e-19 (double: sin to
-/// x^17, cos to x^16) or 2e-9 (float: sin to x^9, cos to x^10) relative: the result is within a
-/// few ulps of the correctly rounded one (measured: 1.3 eps absolute in double, 0.8 eps in float),
-/// both values in [0, 1].
-template <class T> APSE_FUNC SinCosValues<T> sin_cos_quarter_turn(T q) noexcept {
-    // Without branches (q is a random sample's, and a 50/50 branch is mispredicted half the
-    // time): r = min(q, 1 − q) and the final swap, both by mask blends (detail/pairs.hpp; a
-    // compiler merges a plain min with the swap's test into one branch).
-    const bool flip = q > T(0.5);
-    T r = q, other = T(1) - q;
-    swap_if(flip, r, other);
-    const T x = r * half_pi_v<T>, x2 = x * x;
-    T s, c;
+/// sin(t pi/2) for t in [0, 1] (not checked): x P(x^2), x = t pi/2, with P the Taylor polynomial
+/// of sin(x)/x to x^20 in double (the first term left out is below 1e-18 at x = pi/2) and to x^12
+/// in float (below 7e-10), by Estrin's scheme; the powers of x^2 beyond the first are formed from
+/// max(x^2, 2^-14) in float (no subnormals for small t; the sum moves by less than 2^-34).
+template <class T> APSE_FUNC T sin_quarter_turn(T t) noexcept {
+    const T x = t * half_pi_v<T>, y = x * x;
     if constexpr (sizeof(T) == sizeof(float)) {
-        // Estrin's scheme in x^2 too (depth 3 instead of Horner's 5)
-        const T x4 = x2 * x2;
-        s = x * ((T(1) + T(-1.0 / 6) * x2) + x4 * ((T(1.0 / 120) + T(-1.0 / 5040) * x2) + x4 * T(1.0 / 362880)));
-        c = (T(1) + T(-0.5) * x2) + x4 * ((T(1.0 / 24) + T(-1.0 / 720) * x2) +
-                                          x4 * (T(1.0 / 40320) + T(-1.0 / 3628800) * x2));
+        const T yp = max_of(y, T(0x1p-14)), y2 = yp * yp, y4 = y2 * y2;
+        const T p01 = T(1) + T(-1.0 / 6) * y, p23 = T(1.0 / 120) + T(-1.0 / 5040) * y;
+        const T p45 = T(1.0 / 362880) + T(-1.0 / 39916800) * y;
+        return x * ((p01 + p23 * y2) + (p45 + T(1.0 / 6227020800.0) * y2) * y4);
     } else {
-        s = x * estrin8(x2, T(1), T(-1.0 / 6), T(1.0 / 120), T(-1.0 / 5040), T(1.0 / 362880), T(-1.0 / 39916800),
-                        T(1.0 / 6227020800.0), T(-1.0 / 1307674368000.0), T(1.0 / 355687428096000.0));
-        c = estrin8(x2, T(1), T(-0.5), T(1.0 / 24), T(-1.0 / 720), T(1.0 / 40320), T(-1.0 / 3628800),
-                    T(1.0 / 479001600), T(-1.0 / 87178291200.0), T(1.0 / 20922789888000.0));
+        const T y2 = y * y, y4 = y2 * y2, y8 = y4 * y4;
+        const T p01 = T(1) + T(-1.0 / 6) * y, p23 = T(1.0 / 120) + T(-1.0 / 5040) * y;
+        const T p45 = T(1.0 / 362880) + T(-1.0 / 39916800) * y;
+        const T p67 = T(1.0 / 6227020800.0) + T(-1.0 / 1307674368000.0) * y;
+        const T p89 = T(1.0 / 355687428096000.0) + T(-1.0 / 121645100408832000.0) * y;
+        const T p07 = (p01 + p23 * y2) + (p45 + p67 * y2) * y4;
+        return x * (p07 + (p89 + T(1.0 / 51090942171709440000.0) * y2) * y8);
     }
-    swap_if(flip, s, c);
-    return {s, c};
+}
+
+/// sin(q pi/2) and cos(q pi/2) = sin((1 − q) pi/2) for q in [0, 1] (not checked: the caller
+/// clamps): two independent sine polynomials on the whole quarter turn, no reflection, no branch
+/// and no select (q is a random sample's: a 50/50 branch is mispredicted half the time, and a
+/// reflection's mask blends cost more than the longer polynomials). 1 − q is exact for
+/// q >= 1/2 (Sterbenz) and within half an ulp of 1 below, where the cosine is flat. Within 1.5
+/// eps (absolute) of the true values, both in [0, 1].
+template <class T> APSE_FUNC SinCosValues<T> sin_cos_quarter_turn(T q) noexcept {
+    return {sin_quarter_turn(q), sin_quarter_turn(T(1) - q)};
 }
 
 /// atan(z) for z in [0, 1], absolute error below 2e-8 (Hastings' degree-17 odd polynomial,
@@ -109,17 +110,16 @@ template <class T> APSE_FUNC T angle_of(T s, T c) noexcept {
 /// (its rounding). 0 if theta1 is 0.
 template <class T> APSE_FUNC T arc_ratio(T s1, T c1, T s2, T c2) noexcept {
     // the smaller over the larger of each pair, then atan or pi/2 − atan: the choices by mask
-    // blends (swap_if; which is larger depends on the shading point: no branch to mispredict)
-    const bool f1 = s1 > c1, f2 = s2 > c2;
+    // blends (swap_if_greater; which is larger depends on the shading point: no branch to mispredict)
     T n1 = s1, d1 = c1, n2 = s2, d2 = c2;
-    swap_if(f1, n1, d1);
-    swap_if(f2, n2, d2);
+    swap_if_greater(s1, c1, n1, d1);
+    swap_if_greater(s2, c2, n2, d2);
     T z1, z2;
     div2(n1, d1, n2, d2, z1, z2);
     T a1 = atan_unit_approx(z1), a2 = atan_unit_approx(z2);
     T b1 = half_pi_v<T> - a1, b2 = half_pi_v<T> - a2;
-    swap_if(f1, a1, b1);
-    swap_if(f2, a2, b2);
+    swap_if_greater(s1, c1, a1, b1);
+    swap_if_greater(s2, c2, a2, b2);
     return a1 > T(0) ? a2 / a1 : T(0);
 }
 

@@ -71,9 +71,11 @@ public:
         for (int r = 0; r < 4; ++r) { rows_[r] = table.cdf; weights_[r] = T(0); }
         valid_ = !ellipse.empty() && table.cdf != nullptr && table.bins >= 1 && table.alpha_nodes >= 2 &&
                  table.ratio_nodes >= 2 && ellipse.tan_alpha > T(0);
-        T sqrt_ca;  // kappa = sqrt((1 + cos alpha)/(1 + cos beta)) and sqrt(cos alpha), paired
-        detail::sqrt2((T(1) + axes_.ca) / (T(1) + axes_.cb), axes_.ca, kappa_, sqrt_ca);
-        kappa2_ = kappa_ * kappa_;
+        // kappa^2 = (1 + cos alpha)/(1 + cos beta) and its inverse, paired; then kappa and
+        // sqrt(cos alpha), paired
+        T inv_kappa2, sqrt_ca;
+        detail::div2(T(1) + axes_.ca, T(1) + axes_.cb, T(1) + axes_.cb, T(1) + axes_.ca, kappa2_, inv_kappa2);
+        detail::sqrt2(kappa2_, axes_.ca, kappa_, sqrt_ca);
         bin_width_ = half_pi_v<T> / T(bins_ > 0 ? bins_ : 1);
         inv_bins_ = T(1) / T(bins_ > 0 ? bins_ : 1);
         pdf_scale_ = T(0);
@@ -81,12 +83,12 @@ public:
         if (!valid_) return;
         // pdf = (dF N) (1 + C) n^2 / (2 pi a b kappa), n = |(cos lambda, kappa sin lambda)|
         // (density()): the constant part
-        // 1/(2 pi a b kappa) = (1/(2 pi)) (1/a) (1/(b kappa)), multiplied in this order so that it
-        // neither underflows nor overflows for the smallest ellipses (it is ~1/Omega; dF N is ~1;
-        // kappa is in [1/sqrt 2, 1]).
-        T inv_a, inv_bk;
-        detail::div2(T(1), axes_.a, T(1), axes_.b * kappa_, inv_a, inv_bk);
-        pdf_scale_ = ((T(1) / two_pi_v<T>) * inv_a) * inv_bk;
+        // 1/(2 pi a b kappa) = (1/(2 pi)) (1/a) (1/b) (kappa / kappa^2), multiplied in this order so
+        // that it neither underflows nor overflows for the smallest ellipses (it is ~1/Omega; dF N
+        // is ~1; 1/kappa is in [1, sqrt 2]). 1/a and 1/b do not wait for kappa.
+        T inv_a, inv_b;
+        detail::div2(T(1), axes_.a, T(1), axes_.b, inv_a, inv_b);
+        pdf_scale_ = (((T(1) / two_pi_v<T>) * inv_a) * inv_b) * (kappa_ * inv_kappa2);
         ba_ = axes_.b * inv_a;
         if (!detail::is_finite(pdf_scale_) || !(pdf_scale_ > T(0))) { valid_ = false; pdf_scale_ = T(0); return; }
         // Table coordinates: x = 1 − sqrt(cos alpha), y = beta/alpha (the latter by polynomials,
