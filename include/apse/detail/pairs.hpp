@@ -68,16 +68,17 @@ template <class T> APSE_FUNC void div2(T a, T b, T c, T d, T& qa, T& qc) noexcep
 
 /// (x, y) swapped when a > b (not swapped if a or b is NaN), without a branch: the swap's test is
 /// unpredictable where it is used, and compilers turn a plain select, or its arithmetic form, into
-/// a branch. SSE2: the compare's all-ones/all-zeros lanes are the mask of two and/andnot/or
-/// blends, on broadcast operands (one shuffle each: no lane zeroing, no round trip through an
-/// integer register).
+/// a branch. SSE2, by mask blends (and/andnot/or): in double on the pair (y, x) and its shuffle,
+/// with the mask from the comparison's flag; in float on broadcast operands, with the mask from a
+/// vector compare (measured, per type, the faster of the two forms in the tabulated maps).
 template <class T> APSE_FUNC void swap_if_greater(T a, T b, T& x, T& y) noexcept {
 #if APSE_PAIRS_SSE2
     if constexpr (sizeof(T) == sizeof(double)) {
-        const __m128d m = _mm_cmpgt_pd(_mm_set1_pd(double(a)), _mm_set1_pd(double(b)));
-        const __m128d vx = _mm_set1_pd(double(x)), vy = _mm_set1_pd(double(y));
-        x = T(_mm_cvtsd_f64(_mm_or_pd(_mm_andnot_pd(m, vx), _mm_and_pd(m, vy))));
-        y = T(_mm_cvtsd_f64(_mm_or_pd(_mm_andnot_pd(m, vy), _mm_and_pd(m, vx))));
+        const __m128d xy = _mm_set_pd(double(y), double(x)), yx = _mm_shuffle_pd(xy, xy, 1);
+        const __m128d m = _mm_castsi128_pd(_mm_set1_epi64x(-static_cast<long long>(a > b)));
+        const __m128d r = _mm_or_pd(_mm_andnot_pd(m, xy), _mm_and_pd(m, yx));
+        x = T(_mm_cvtsd_f64(r));
+        y = T(_mm_cvtsd_f64(_mm_unpackhi_pd(r, r)));
         return;
     } else {
         const __m128 m = _mm_cmpgt_ps(_mm_set1_ps(float(a)), _mm_set1_ps(float(b)));
