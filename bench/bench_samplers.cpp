@@ -73,7 +73,7 @@ struct AreaFramePerPoint {  // the same sampler, its frame rebuilt at every shad
 struct Projection {
     static constexpr const char* name = "projection";
     template <class T> static auto make(const DiskConfig<T>& d, const apse::TabulationView&) {
-        return apse::project_disk(d.o, d.c, d.n, d.r);
+        return apse::project_disk(d.o, d.frame);
     }
 };
 template <class T> struct EllipseAndSolidAngle {
@@ -83,7 +83,7 @@ template <class T> struct EllipseAndSolidAngle {
 struct ProjectionSolidAngle {
     static constexpr const char* name = "projection_solid_angle";
     template <class T> static auto make(const DiskConfig<T>& d, const apse::TabulationView&) {
-        const apse::SphericalEllipse<T> e = apse::project_disk(d.o, d.c, d.n, d.r);
+        const apse::SphericalEllipse<T> e = apse::project_disk(d.o, d.frame);
         return EllipseAndSolidAngle<T>{e, e.solid_angle()};
     }
 };
@@ -108,31 +108,31 @@ struct GamitoRetry8 {
 struct Radial {
     static constexpr const char* name = "radial";
     template <class T> static auto make(const DiskConfig<T>& d, const apse::TabulationView&) {
-        return apse::RadialMap<T>(apse::project_disk(d.o, d.c, d.n, d.r));
+        return apse::RadialMap<T>(apse::project_disk(d.o, d.frame));
     }
 };
 struct LdRadial {
     static constexpr const char* name = "ld_radial";
     template <class T> static auto make(const DiskConfig<T>& d, const apse::TabulationView&) {
-        return apse::LdRadialMap<T>(apse::project_disk(d.o, d.c, d.n, d.r));
+        return apse::LdRadialMap<T>(apse::project_disk(d.o, d.frame));
     }
 };
 struct Parallel {
     static constexpr const char* name = "parallel";
     template <class T> static auto make(const DiskConfig<T>& d, const apse::TabulationView&) {
-        return apse::ParallelMap<T>(apse::project_disk(d.o, d.c, d.n, d.r));
+        return apse::ParallelMap<T>(apse::project_disk(d.o, d.frame));
     }
 };
 struct Tabulated {
     static constexpr const char* name = "tabulated";
     template <class T> static auto make(const DiskConfig<T>& d, const apse::TabulationView& v) {
-        return apse::TabulatedMap<T>(apse::project_disk(d.o, d.c, d.n, d.r), v);
+        return apse::TabulatedMap<T>(apse::project_disk(d.o, d.frame), v);
     }
 };
 struct TabulatedLdRadial {
     static constexpr const char* name = "tabulated_ld_radial";
     template <class T> static auto make(const DiskConfig<T>& d, const apse::TabulationView& v) {
-        return apse::TabulatedLdRadialMap<T>(apse::project_disk(d.o, d.c, d.n, d.r), v);
+        return apse::TabulatedLdRadialMap<T>(apse::project_disk(d.o, d.frame), v);
     }
 };
 // Cosine-weighted samplers: the receiver's normal is the config's half_y (the in-plane direction

@@ -49,9 +49,12 @@ TEMPLATE_TEST_CASE("disk light: point, distance and pdf", "[disk_light]", float,
     const double eps = double(apse::epsilon<T>());
     const double tol_hit = 64 * eps * (1 + glm::length(cd - od) / d);
     apse_test::Rng rng(9);
+    const apse::DiskFrame<T> frame = apse::DiskFrame<T>::make(c, n, r);
+    for (int from_frame = 0; from_frame < 2; ++from_frame)
     for (apse::DiskMap m : kMaps) {
-        const apse::DiskLight<T> light(o, c, n, r, m);
-        INFO("map " << int(m));
+        // the light from the disk's parameters, or from its stored frame (the same checks)
+        const apse::DiskLight<T> light = from_frame ? apse::DiskLight<T>(o, frame, m) : apse::DiskLight<T>(o, c, n, r, m);
+        INFO("map " << int(m) << (from_frame ? ", from the stored frame" : ""));
         CHECK(std::fabs(double(light.solid_angle()) - omega_ref) / omega_ref <= tol_omega);
         for (int i = 0; i < 500; ++i) {
             const Vec2<T> u(rng.uniform<T>(), rng.uniform<T>());
@@ -66,7 +69,7 @@ TEMPLATE_TEST_CASE("disk light: point, distance and pdf", "[disk_light]", float,
             CHECK(std::fabs(glm::length(glm::dvec3(s.direction)) - 1) <= 8 * eps);
             // MIS: the pdf of the sampled direction, by the light and by the free function
             CHECK(light.pdf(s.direction) == s.pdf);
-            CHECK(apse::disk_light_pdf(o, c, n, r, s.direction) == s.pdf);
+            if (!from_frame) CHECK(apse::disk_light_pdf(o, c, n, r, s.direction) == s.pdf);
             // the inverse gives the square point back (away from seams)
             if (u.x > T(0.01) && u.x < T(0.99) && u.y > T(0.01) && u.y < T(0.99)) {
                 const Vec2<T> back = light.invert(s.direction);
@@ -78,11 +81,73 @@ TEMPLATE_TEST_CASE("disk light: point, distance and pdf", "[disk_light]", float,
         CHECK(light.pdf(-light.ellipse().z) == T(0));
         CHECK(apse::disk_light_pdf(o, c, n, r, Vec3<T>(-light.ellipse().z)) == T(0));
         // the free function agrees with the class
+        if (from_frame) continue;
         const auto s1 = apse::sample_disk_light(o, c, n, r, m, Vec2<T>(T(0.3), T(0.8)));
         const auto s2 = light.sample(Vec2<T>(T(0.3), T(0.8)));
         CHECK(s1.direction == s2.direction);
         CHECK(s1.pdf == s2.pdf);
     }
+}
+
+// The stored-frame constructors for every map, plain and cosine-weighted: each light's own
+// consistency (pdf(direction) == reported pdf, points on the disk) and agreement with the light
+// built from the disk's parameters. Tolerance: the two ellipses agree within the projection's
+// budget (a few eps times its condition, "project_disk from a stored DiskFrame"); every density
+// here is a smooth function of the ellipse and of u, so the pdfs agree to 1e-4 (float) / 1e-10
+// (double) relative, ~100 times that budget for this moderate configuration (a sample at a
+// tabulated bin edge could differ by up to 1 %: none in this configuration).
+TEMPLATE_TEST_CASE("disk light from a stored DiskFrame: every map, plain and cosine-weighted", "[disk_light]", float,
+                   double) {
+    using T = TestType;
+    const Vec3<T> o(T(0.3), T(-0.2), T(1.5)), c(T(1), T(0.5), T(-0.5)), n(T(0.2), T(-0.1), T(2)), nr(T(0.1), T(0.3), T(-1));
+    const T r = T(0.8);
+    const apse::DiskFrame<T> frame = apse::DiskFrame<T>::make(c, n, r);
+    const apse::TabulationView table = apse::default_table().view();
+    const double tol = sizeof(T) == 4 ? 1e-4 : 1e-10;
+    // pdf(direction) recomputes the density from the direction's azimuth: within 1e-3 (float) /
+    // 1e-9 (double) of the sampled pdf, as in "the stateless pdf is every sampler's own density"
+    const double self_tol = sizeof(T) == 4 ? 1e-3 : 1e-9;
+    const glm::dvec3 cd(c), nd = glm::normalize(glm::dvec3(n));
+    apse_test::Rng rng(17);
+    int compared = 0;
+    for (int cosine = 0; cosine < 2; ++cosine)
+        for (apse::DiskMap m : kAllMaps) {
+            INFO("map " << int(m) << (cosine ? ", cosine-weighted" : ""));
+            const apse::DiskLight<T> framed = cosine ? apse::DiskLight<T>(o, frame, m, table, nr)
+                                                     : apse::DiskLight<T>(o, frame, m, table);
+            const apse::DiskLight<T> plain = cosine ? apse::DiskLight<T>(o, c, n, r, m, table, nr)
+                                                    : apse::DiskLight<T>(o, c, n, r, m, table);
+            REQUIRE_FALSE(framed.empty());
+            CHECK(framed.cosine_weighted() == bool(cosine));
+            for (int i = 0; i < 200; ++i) {
+                const Vec2<T> u(rng.uniform<T>(), rng.uniform<T>());
+                const auto s = framed.sample(u), p = plain.sample(u);
+                REQUIRE(s.pdf > T(0));
+                if (!cosine && !apse::is_tabulated(m)) CHECK(framed.pdf(s.direction) == s.pdf);  // 1/Omega
+                else CHECK(std::fabs(double(framed.pdf(s.direction)) / double(s.pdf) - 1) <= self_tol);
+                CHECK(std::fabs(double(s.pdf) / double(p.pdf) - 1) <= tol);
+                CHECK(glm::length(glm::dvec3(s.direction) - glm::dvec3(p.direction)) <= tol);
+                CHECK(std::fabs(glm::dot(glm::dvec3(s.point) - cd, nd)) <= tol);
+                ++compared;
+            }
+        }
+    CHECK(compared == 2000);
+    // the table-free overloads: exact maps; a tabulated map without a table is the empty light
+    CHECK(apse::DiskLight<T>(o, frame).map() == apse::DiskMap::ld_radial);
+    CHECK(apse::DiskLight<T>(o, frame, apse::DiskMap::parallel, nr).cosine_weighted());
+    CHECK(apse::DiskLight<T>(o, frame, apse::DiskMap::tabulated).empty());
+    // an invalid frame gives the empty light
+    const T nan = std::numeric_limits<T>::quiet_NaN();
+    for (const apse::DiskFrame<T>& bad : {apse::DiskFrame<T>::make(c, n, T(0)), apse::DiskFrame<T>::make(c, Vec3<T>(0), r),
+                                          apse::DiskFrame<T>::make(Vec3<T>(nan, 0, 0), n, r)}) {
+        CHECK(apse::project_disk(o, bad).empty());
+        const apse::DiskLight<T> light(o, bad, apse::DiskMap::tabulated_ld_radial, table, nr);
+        CHECK(light.empty());
+        CHECK(light.sample(Vec2<T>(T(0.4), T(0.6))).pdf == T(0));
+    }
+    // o in the disk's plane, or not finite: empty
+    CHECK(apse::project_disk(Vec3<T>(c + T(3) * frame.e1), frame).empty());
+    CHECK(apse::project_disk(Vec3<T>(nan, 0, 0), frame).empty());
 }
 
 TEMPLATE_TEST_CASE("disk light: degenerate and bad input", "[disk_light][robust]", float, double) {

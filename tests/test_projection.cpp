@@ -278,6 +278,26 @@ TEMPLATE_TEST_CASE("project_disk against the mpmath table", "[projection][disk]"
     stats.print("disk", type_name(T()));
 }
 
+// The light's stored frame (DiskFrame: the normal normalised once, then used as unit length)
+// meets the same budgets as the per-point normal: its normalisation error (a few ulps of the
+// normal's direction and length) is of the size of the per-point path's own rounding of 1/|n|.
+TEMPLATE_TEST_CASE("project_disk from a stored DiskFrame against the mpmath table", "[projection][disk]", float, double) {
+    using T = TestType;
+    const Table t = load("disks.csv");
+    REQUIRE(t.rows.size() >= 200);
+    Stats stats;
+    int compared = 0;
+    for (const auto& f : t.rows) {
+        const Row r{&t, &f};
+        const apse::DiskFrame<T> frame = apse::DiskFrame<T>::make(r.v<T>("c"), r.v<T>("n"), T(r.num("r")));
+        const auto e = apse::project_disk(r.v<T>("o"), frame);
+        compare(r.str("case"), e, expected(r), stats, r.str("case") + " row " + std::to_string(&f - &t.rows[0]));
+        compared += !e.empty();
+    }
+    CHECK(compared >= 200);
+    stats.print("disk (stored frame)", type_name(T()));
+}
+
 TEMPLATE_TEST_CASE("project_disk's closed-form fields agree with from_tangents of its tangents", "[projection][disk]",
                    float, double) {
     // project_disk fills sin, cos, 1 − cos and m from lambda directly (not via the tangents);

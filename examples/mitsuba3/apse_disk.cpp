@@ -67,11 +67,12 @@ inline ApseDiskSampler parse_sampler(const std::string &name) {
 struct Geometry {
     gvec3 center{0.f}, u{0.f}, v{0.f}, normal{0.f, 0.f, 1.f};
     float radius = 0.f;  ///< > 0: a disk of this radius; 0: a general ellipse
+    apse::DiskFrame<float> frame{};  ///< the disk's stored frame (radius > 0)
 };
 
 /// The spherical ellipse the light subtends at o (two-sided).
 inline apse::SphericalEllipse<float> project(const Geometry &g, const gvec3 &o) {
-    return g.radius > 0.f ? apse::project_disk(o, g.center, g.normal, g.radius)
+    return g.radius > 0.f ? apse::project_disk(o, g.frame)
                           : apse::project_ellipse(o, g.center, g.u, g.v);
 }
 
@@ -103,7 +104,7 @@ auto with_sampler(ApseDiskSampler kind, const Geometry &g, const gvec3 &o, const
     using apse::CosineWeighted;
     switch (kind) {
         case ApseDiskSampler::area:
-            return f(apse::DiskAreaSampler<float>(o, g.center, g.normal, g.radius));
+            return f(apse::DiskAreaSampler<float>(o, g.frame));
         case ApseDiskSampler::radial: return f(apse::RadialMap<float>(project(g, o)));
         case ApseDiskSampler::parallel: return f(apse::ParallelMap<float>(project(g, o)));
         case ApseDiskSampler::tabulated_ld_radial:
@@ -345,6 +346,7 @@ private:
         m_geom.v = to_glm(v);
         m_geom.normal = to_glm(n);
         m_geom.radius = radius;
+        m_geom.frame = apse::DiskFrame<float>::make(m_geom.center, m_geom.normal, radius);
     }
 
     ref<Texture> m_radiance;

@@ -3,9 +3,9 @@
 #pragma once
 
 /// @file apse.hpp
-/// The umbrella header: every public sampler and its building blocks — projection, the maps, the
-/// tabulated maps, cosine-weighted sampling, DiskLight, the spherical-rectangle sampler and the
-/// elliptic integrals. The baselines apse is measured against (uniform-by-area disk sampling,
+/// The umbrella header: every public sampler and its building blocks — a disk light's stored
+/// frame, projection, the maps, the tabulated maps, cosine-weighted sampling, DiskLight, the
+/// spherical-rectangle sampler and the elliptic integrals. The baselines apse is measured against (uniform-by-area disk sampling,
 /// Gamito's rejection) are not included: `#include <apse/baselines/area.hpp>` /
 /// `<apse/baselines/gamito.hpp>` for them.
 
@@ -14,6 +14,7 @@
 #include "elliptic.hpp"
 #include "sample.hpp"
 #include "spherical_ellipse.hpp"
+#include "disk_frame.hpp"
 #include "projection.hpp"
 #include "spherical_rectangle.hpp"
 #include "maps/radial.hpp"

@@ -111,6 +111,27 @@ public:
                         DiskMap map, const vec3& receiver_normal) noexcept
         : DiskLight(o, center, normal, radius, map, no_table(), receiver_normal) {}
 
+    /// The disk of the light's stored frame (DiskFrame, built once per light) seen from `o`: the
+    /// light of the constructors above for (frame.center, frame.n, frame.radius), without
+    /// normalising the normal per shading point (project_disk(o, frame)). An invalid frame gives
+    /// the empty light.
+    APSE_FUNC DiskLight(const vec3& o, const DiskFrame<T>& frame, DiskMap map, const TabulationView& table) noexcept
+        : DiskLight(o, frame.center, frame.n, map, project_disk(o, frame), table) {}
+
+    /// The same without a table (exact maps; a tabulated `map` gives the empty light).
+    APSE_FUNC explicit DiskLight(const vec3& o, const DiskFrame<T>& frame, DiskMap map = DiskMap::ld_radial) noexcept
+        : DiskLight(o, frame, map, no_table()) {}
+
+    /// The stored frame's disk, cosine-weighted for the receiver normal `receiver_normal` (as the
+    /// constructor with a receiver normal above).
+    APSE_FUNC DiskLight(const vec3& o, const DiskFrame<T>& frame, DiskMap map, const TabulationView& table,
+                        const vec3& receiver_normal) noexcept
+        : DiskLight(o, frame.center, frame.n, map, project_disk(o, frame), table, receiver_normal) {}
+
+    /// The same over an exact map, without a table.
+    APSE_FUNC DiskLight(const vec3& o, const DiskFrame<T>& frame, DiskMap map, const vec3& receiver_normal) noexcept
+        : DiskLight(o, frame, map, no_table(), receiver_normal) {}
+
     /// The map used.
     APSE_FUNC DiskMap map() const noexcept { return map_; }
 

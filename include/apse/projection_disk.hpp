@@ -14,6 +14,7 @@
 #include "detail/pairs.hpp"
 #include "detail/type_identity.hpp"
 #include "detail/vector.hpp"
+#include "disk_frame.hpp"
 #include "math.hpp"
 #include "spherical_ellipse.hpp"
 
@@ -29,40 +30,16 @@ APSE_FUNC bool disk_faces(const glm::vec<3, T>& o, const glm::vec<3, T>& center,
     return glm::dot(o - center, normal) > T(0);
 }
 
-/// The spherical ellipse subtended at `o` by the disk {p : (p − center)·n = 0, |p − center| <= radius},
-/// docs/math.md §2, in closed form: with d the height of o above the plane, h the distance from the
-/// foot of o to the centre, T = d² + h² − r², Delta = sqrt(T² + 4d²r²), lambda = (T + Delta)/2:
-/// tan alpha = r/sqrt(lambda), tan beta = r d/lambda (rewritten without cancellation when T < 0);
-/// the major axis x is perpendicular to the plane through o, the centre and the normal, and the
-/// centre direction z is the cone's axis; the sines, cosines and m come from lambda in closed form
-/// too (no trigonometric call; docs/projection.md "Methods").
-/// Domain: `normal` any finite non-zero vector (only its direction is used: it is normalised);
-/// `radius` > 0; two-sided (use `disk_faces` to cull one-sided emitters).
-/// On the disk's axis alpha = beta and the frame is a deterministic function of the normal.
-/// Empty (Omega = 0) for: o in the disk's plane (including o on the disk or its rim: the
-/// emitter's own surface), radius <= 0, zero or non-finite normal, NaN/Inf anywhere, lights with
-/// tan(beta) below detail::tan_min<T>(). Measure: solid angle (two-sided, the disk's projected
-/// area on the unit sphere). Accuracy: see the file comment. T is deduced from the vectors
-/// alone: the radius may be any arithmetic type (converted to T), e.g. float vectors with a
-/// double or int radius.
+namespace detail {
+
+/// project_disk after its input checks: w0 = center − o (finite), w_max = max |w0_i|, nv the
+/// disk's normal with inv_n2 = 1/|nv|² and inv_n = 1/|nv| (both 1 for a DiskFrame's unit normal),
+/// radius > 0 and finite.
 template <class T>
-APSE_FUNC SphericalEllipse<T> project_disk(const glm::vec<3, T>& o, const glm::vec<3, T>& center,
-                                           const glm::vec<3, T>& normal, detail::type_identity_t<T> radius) noexcept {
+APSE_HOT_INLINE SphericalEllipse<T> project_disk_checked(const glm::vec<3, T>& w0, T w_max, const glm::vec<3, T>& nv,
+                                                         T inv_n2, T inv_n, T radius) noexcept {
     using vec3 = glm::vec<3, T>;  ///< a 3-D vector (direction, point or normal)
     using E = SphericalEllipse<T>;
-    const vec3 w0 = center - o;
-    const T w_max = detail::max_abs3(w0);
-    const T n2 = glm::dot(normal, normal);
-    if (!(radius > T(0)) || !detail::is_finite(radius + w_max + n2)) return E::make_empty();
-    // The normal N and 1/|N|, 1/|N|^2 (directly when |N|^2 is a normal number, else rescaled).
-    vec3 nv = normal;
-    T nn2 = n2;
-    if (!(n2 >= detail::tan_min<T>() && n2 <= T(1) / detail::tan_min<T>())) {
-        nv = detail::robust_normalize(normal);
-        nn2 = glm::dot(nv, nv);
-        if (!(nn2 > T(0))) return E::make_empty();
-    }
-    const T inv_n2 = T(1) / nn2, inv_n = std::sqrt(nn2) * inv_n2;
     // Exact power-of-two rescaling (only when the scene's scale is extreme): max(|w|_inf, r) in
     // [1/2, 1) then, so no product of up to six lengths below can overflow or underflow.
     const T s_max = detail::max_of(w_max, radius);
@@ -174,6 +151,57 @@ APSE_FUNC SphericalEllipse<T> project_disk(const glm::vec<3, T>& o, const glm::v
     cos_c *= inv_norm;
     // A NaN here (only for pathologically underflowing d r) makes from_tangents return empty.
     return E::from_tangents(xd, cos_c * yd - sin_c * zd, sin_c * yd + cos_c * zd, tan_alpha, tan_beta);
+}
+
+}  // namespace detail
+
+/// The spherical ellipse subtended at `o` by the disk {p : (p − center)·n = 0, |p − center| <= radius},
+/// docs/math.md §2, in closed form: with d the height of o above the plane, h the distance from the
+/// foot of o to the centre, T = d² + h² − r², Delta = sqrt(T² + 4d²r²), lambda = (T + Delta)/2:
+/// tan alpha = r/sqrt(lambda), tan beta = r d/lambda (rewritten without cancellation when T < 0);
+/// the major axis x is perpendicular to the plane through o, the centre and the normal, and the
+/// centre direction z is the cone's axis; the sines, cosines and m come from lambda in closed form
+/// too (no trigonometric call; docs/projection.md "Methods").
+/// Domain: `normal` any finite non-zero vector (only its direction is used: it is normalised);
+/// `radius` > 0; two-sided (use `disk_faces` to cull one-sided emitters).
+/// On the disk's axis alpha = beta and the frame is a deterministic function of the normal.
+/// Empty (Omega = 0) for: o in the disk's plane (including o on the disk or its rim: the
+/// emitter's own surface), radius <= 0, zero or non-finite normal, NaN/Inf anywhere, lights with
+/// tan(beta) below detail::tan_min<T>(). Measure: solid angle (two-sided, the disk's projected
+/// area on the unit sphere). Accuracy: see the file comment. T is deduced from the vectors
+/// alone: the radius may be any arithmetic type (converted to T), e.g. float vectors with a
+/// double or int radius.
+template <class T>
+APSE_FUNC SphericalEllipse<T> project_disk(const glm::vec<3, T>& o, const glm::vec<3, T>& center,
+                                           const glm::vec<3, T>& normal, detail::type_identity_t<T> radius) noexcept {
+    using vec3 = glm::vec<3, T>;  ///< a 3-D vector (direction, point or normal)
+    using E = SphericalEllipse<T>;
+    const vec3 w0 = center - o;
+    const T w_max = detail::max_abs3(w0);
+    const T n2 = glm::dot(normal, normal);
+    if (!(radius > T(0)) || !detail::is_finite(radius + w_max + n2)) return E::make_empty();
+    // The normal N and 1/|N|, 1/|N|^2 (directly when |N|^2 is a normal number, else rescaled).
+    vec3 nv = normal;
+    T nn2 = n2;
+    if (!(n2 >= detail::tan_min<T>() && n2 <= T(1) / detail::tan_min<T>())) {
+        nv = detail::robust_normalize(normal);
+        nn2 = glm::dot(nv, nv);
+        if (!(nn2 > T(0))) return E::make_empty();
+    }
+    const T inv_n2 = T(1) / nn2;
+    return detail::project_disk_checked(w0, w_max, nv, inv_n2, std::sqrt(nn2) * inv_n2, T(radius));
+}
+
+/// project_disk for the light's stored frame (disk_frame.hpp: unit normal, radius): the same
+/// ellipse as project_disk(o, frame.center, frame.n, frame.radius) up to rounding (the stored
+/// normal is used as unit length: no normalisation per shading point). Empty for an invalid
+/// frame and as above.
+template <class T>
+APSE_FUNC SphericalEllipse<T> project_disk(const glm::vec<3, T>& o, const DiskFrame<T>& frame) noexcept {
+    const glm::vec<3, T> w0 = frame.center - o;
+    const T w_max = detail::max_abs3(w0);
+    if (!frame.valid() || !detail::is_finite(w_max)) return SphericalEllipse<T>::make_empty();
+    return detail::project_disk_checked(w0, w_max, frame.n, T(1), T(1), frame.radius);
 }
 
 }  // namespace apse

@@ -85,7 +85,7 @@ __global__ void projection_kernel(const T* in, T* out, int n) {
     s += smp.pdf + area.pdf(smp.direction) + area.invert(smp.direction).x + area.normal().z + (area.empty() ? T(1) : T(0));
     const apse::DiskFrame<T> frame = apse::DiskFrame<T>::make(c, nrm, T(1));
     const apse::DiskAreaSampler<T> area_f(o, frame);
-    s += area_f.sample(uv).pdf + (frame.valid() ? T(1) : T(0));
+    s += area_f.sample(uv).pdf + (frame.valid() ? T(1) : T(0)) + apse::project_disk(o, frame).solid_angle();
     const auto pcs = apse::detail::concentric_to_disk_signed(uv);
     s += pcs.radius + pcs.angle;
     const auto pc = apse::detail::concentric_to_disk(uv);
@@ -169,6 +169,8 @@ __global__ void tabulated_kernel(const T* in, T* out, float* table_rows, int n) 
     s += ls.pdf + ls.distance + light.pdf(ls.direction) + light.invert(ls.direction).x + light.solid_angle();
     s += T(apse::is_tabulated(light.map()) ? 1 : 0) + apse::sample_disk_light(o, c, nrm, 1, m, view, u).pdf;
     s += apse::disk_light_pdf(o, c, nrm, 1.0, m, view, ls.direction);
+    const apse::DiskLight<T> framed(o, apse::DiskFrame<T>::make(c, nrm, T(1)), m, view, rn);  // stored frame
+    s += framed.sample(u).pdf;
     out[i] = s;
 }
 
