@@ -3,12 +3,14 @@
 #pragma once
 
 /// @file detail/pairs.hpp
-/// Two independent square roots or two independent divisions in one instruction. On x86-64 the
-/// square-root/divide unit is not fully pipelined (one sqrtsd per ~8 cycles, one divsd per ~4-5
-/// on Zen 3), and apse's set-up code and elliptic integrals are bound by it; SSE `sqrtpd`/`divpd`
-/// (`sqrtps`/`divps` in float) compute two lanes for about the price of one (measured: R_F -12%,
-/// R_J -9%, disk projection -6%). The results are bit-identical to the scalar operations (IEEE
-/// square roots and quotients are correctly rounded either way). Also `swap_if_greater`, a pair
+/// Two independent square roots or two independent divisions in one instruction, in double. On
+/// x86-64 the square-root/divide unit is not fully pipelined (one sqrtsd per ~8 cycles, one divsd
+/// per ~4-5 on Zen 3), and apse's set-up code and elliptic integrals are bound by it; SSE
+/// `sqrtpd`/`divpd` compute two lanes for about the price of one (measured: R_F -12%, R_J -9%,
+/// disk projection -6%). In float the scalar operations are faster (their throughput is higher,
+/// and packing two floats into a vector adds latency: measured, float projection -7 %, tabulated
+/// LD-radial set-up + 1 sample -6 % with the scalar form), so float takes them. The results are
+/// bit-identical either way (IEEE square roots and quotients are correctly rounded). Also `swap_if_greater`, a pair
 /// swapped on a comparison by a mask blend. Elsewhere (CUDA device code, non-x86 hosts, or with
 /// `APSE_NO_SIMD` defined) they are the scalar operations.
 
@@ -28,7 +30,7 @@
 namespace apse {
 namespace detail {
 
-/// sx = sqrt(x), sy = sqrt(y).
+/// sx = sqrt(x), sy = sqrt(y) (paired in double, see the file comment).
 template <class T> APSE_FUNC void sqrt2(T x, T y, T& sx, T& sy) noexcept {
 #if APSE_PAIRS_SSE2
     if constexpr (sizeof(T) == sizeof(double)) {
@@ -36,29 +38,19 @@ template <class T> APSE_FUNC void sqrt2(T x, T y, T& sx, T& sy) noexcept {
         sx = T(_mm_cvtsd_f64(r));
         sy = T(_mm_cvtsd_f64(_mm_unpackhi_pd(r, r)));
         return;
-    } else {
-        const __m128 r = _mm_sqrt_ps(_mm_set_ps(0.0f, 0.0f, float(y), float(x)));
-        sx = T(_mm_cvtss_f32(r));
-        sy = T(_mm_cvtss_f32(_mm_shuffle_ps(r, r, 1)));
-        return;
     }
 #endif
     sx = std::sqrt(x);
     sy = std::sqrt(y);
 }
 
-/// qa = a / b, qc = c / d.
+/// qa = a / b, qc = c / d (paired in double, see the file comment).
 template <class T> APSE_FUNC void div2(T a, T b, T c, T d, T& qa, T& qc) noexcept {
 #if APSE_PAIRS_SSE2
     if constexpr (sizeof(T) == sizeof(double)) {
         const __m128d r = _mm_div_pd(_mm_set_pd(double(c), double(a)), _mm_set_pd(double(d), double(b)));
         qa = T(_mm_cvtsd_f64(r));
         qc = T(_mm_cvtsd_f64(_mm_unpackhi_pd(r, r)));
-        return;
-    } else {
-        const __m128 r = _mm_div_ps(_mm_set_ps(0.0f, 0.0f, float(c), float(a)), _mm_set_ps(1.0f, 1.0f, float(d), float(b)));
-        qa = T(_mm_cvtss_f32(r));
-        qc = T(_mm_cvtss_f32(_mm_shuffle_ps(r, r, 1)));
         return;
     }
 #endif
