@@ -10,9 +10,9 @@
 /// disk projection -6%). In float the scalar operations are faster (their throughput is higher,
 /// and packing two floats into a vector adds latency: measured, float projection -7 %, tabulated
 /// LD-radial set-up + 1 sample -6 % with the scalar form), so float takes them. The results are
-/// bit-identical either way (IEEE square roots and quotients are correctly rounded). Also `swap_if_greater`, a pair
-/// swapped on a comparison by a mask blend. Elsewhere (CUDA device code, non-x86 hosts, or with
-/// `APSE_NO_SIMD` defined) they are the scalar operations.
+/// bit-identical either way (IEEE square roots and quotients are correctly rounded). Elsewhere
+/// (CUDA device code, non-x86 hosts, or with `APSE_NO_SIMD` defined) they are the scalar
+/// operations.
 
 #include <cmath>
 
@@ -56,34 +56,6 @@ template <class T> APSE_FUNC void div2(T a, T b, T c, T d, T& qa, T& qc) noexcep
 #endif
     qa = a / b;
     qc = c / d;
-}
-
-/// (x, y) swapped when a > b (not swapped if a or b is NaN), without a branch: the swap's test is
-/// unpredictable where it is used, and compilers turn a plain select, or its arithmetic form, into
-/// a branch. SSE2, by mask blends (and/andnot/or): in double on the pair (y, x) and its shuffle,
-/// with the mask from the comparison's flag; in float on broadcast operands, with the mask from a
-/// vector compare (measured, per type, the faster of the two forms in the tabulated maps).
-template <class T> APSE_FUNC void swap_if_greater(T a, T b, T& x, T& y) noexcept {
-#if APSE_PAIRS_SSE2
-    if constexpr (sizeof(T) == sizeof(double)) {
-        const __m128d xy = _mm_set_pd(double(y), double(x)), yx = _mm_shuffle_pd(xy, xy, 1);
-        const __m128d m = _mm_castsi128_pd(_mm_set1_epi64x(-static_cast<long long>(a > b)));
-        const __m128d r = _mm_or_pd(_mm_andnot_pd(m, xy), _mm_and_pd(m, yx));
-        x = T(_mm_cvtsd_f64(r));
-        y = T(_mm_cvtsd_f64(_mm_unpackhi_pd(r, r)));
-        return;
-    } else {
-        const __m128 m = _mm_cmpgt_ps(_mm_set1_ps(float(a)), _mm_set1_ps(float(b)));
-        const __m128 vx = _mm_set1_ps(float(x)), vy = _mm_set1_ps(float(y));
-        x = T(_mm_cvtss_f32(_mm_or_ps(_mm_andnot_ps(m, vx), _mm_and_ps(m, vy))));
-        y = T(_mm_cvtss_f32(_mm_or_ps(_mm_andnot_ps(m, vy), _mm_and_ps(m, vx))));
-        return;
-    }
-#endif
-    const bool swap = a > b;
-    const T x0 = x;
-    x = swap ? y : x;
-    y = swap ? x0 : y;
 }
 
 }  // namespace detail
