@@ -8,7 +8,8 @@
 /// size; the same code on the host and in CUDA device code):
 ///
 /// * `sin_cos_quarter_turn(q)`: sin and cos of q pi/2 for q in [0, 1], within 2 eps (Taylor
-///   polynomials of the sine on the whole quarter turn; the cosine as the sine of 1 − q);
+///   polynomials of the sine on the whole quarter turn; the cosine as the sine of 1 − q), and
+///   `sin_cos_of_angle(x)`, the same for an angle x in [0, pi/2];
 /// * `arc_ratio(s1, c1, s2, c2)`: an approximation of the ratio of two angles in [0, pi/2] given
 ///   by their sines and cosines (Hastings' atan of the half angles' tangents; the ratio within
 ///   3e-8 in double, 3e-7 in float):
@@ -41,7 +42,7 @@ template <class T> struct SinCosValues {
 /// most (|c2| + |c3|) 2^-28 + 2^-54: 1.3e-9 for atan_unit_approx's coefficients, 0.02 ulp of its
 /// float result.
 template <class T>
-APSE_FUNC T estrin8(T y, T c0, T c1, T c2, T c3, T c4, T c5, T c6, T c7, T c8) noexcept {
+APSE_HOT_INLINE T estrin8(T y, T c0, T c1, T c2, T c3, T c4, T c5, T c6, T c7, T c8) noexcept {
     const T yp = sizeof(T) == sizeof(float) ? max_of(y, T(0x1p-14)) : y;
     const T y2 = yp * yp, y4 = y2 * y2, y8 = y4 * y4;
     const T p01 = c0 + c1 * y, p23 = c2 + c3 * y, p45 = c4 + c5 * y, p67 = c6 + c7 * y;
@@ -53,7 +54,7 @@ APSE_FUNC T estrin8(T y, T c0, T c1, T c2, T c3, T c4, T c5, T c6, T c7, T c8) n
 /// of sin(x)/x to x^20 in double (the first term left out is below 1e-18 at x = pi/2) and to x^12
 /// in float (below 7e-10), by Estrin's scheme; the powers of x^2 beyond the first are formed from
 /// max(x^2, 2^-14) in float (no subnormals for small t; the sum moves by less than 2^-34).
-template <class T> APSE_FUNC T sin_quarter_turn(T t) noexcept {
+template <class T> APSE_HOT_INLINE T sin_quarter_turn(T t) noexcept {
     const T x = t * half_pi_v<T>, y = x * x;
     if constexpr (sizeof(T) == sizeof(float)) {
         const T yp = max_of(y, T(0x1p-14)), y2 = yp * yp, y4 = y2 * y2;
@@ -77,13 +78,20 @@ template <class T> APSE_FUNC T sin_quarter_turn(T t) noexcept {
 /// reflection's mask blends cost more than the longer polynomials). 1 − q is exact for
 /// q >= 1/2 (Sterbenz) and within half an ulp of 1 below, where the cosine is flat. Measured
 /// within 1.9 eps (double) / 1.6 eps (float) absolute of the true values, both in [0, 1].
-template <class T> APSE_FUNC SinCosValues<T> sin_cos_quarter_turn(T q) noexcept {
+template <class T> APSE_HOT_INLINE SinCosValues<T> sin_cos_quarter_turn(T q) noexcept {
     return {sin_quarter_turn(q), sin_quarter_turn(T(1) - q)};
+}
+
+/// sin and cos of the angle x in [0, pi/2] (clamped into it): sin_cos_quarter_turn(x 2/pi),
+/// within 3 eps absolute (the quotient's rounding adds at most half an ulp of the angle) and
+/// a few eps relative for small x (the sine is x (1 + O(x^2))).
+template <class T> APSE_HOT_INLINE SinCosValues<T> sin_cos_of_angle(T x) noexcept {
+    return sin_cos_quarter_turn(clamp(x * T(0.63661977236758134308), T(0), T(1)));
 }
 
 /// atan(z) for z in [0, 1], absolute error below 2e-8 (Hastings' degree-17 odd polynomial,
 /// Abramowitz & Stegun 4.4.49); in float the rounding of T dominates.
-template <class T> APSE_FUNC T atan_unit_approx(T z) noexcept {
+template <class T> APSE_HOT_INLINE T atan_unit_approx(T z) noexcept {
     return z * estrin8(z * z, T(1), T(-0.3333314528), T(0.1999355085), T(-0.1420889944), T(0.1065626393),
                        T(-0.0752896400), T(0.0429096138), T(-0.0161657367), T(0.0028662257));
 }

@@ -41,6 +41,7 @@
 #include "../elliptic.hpp"
 #include "../spherical_ellipse.hpp"
 #include "../detail/math.hpp"
+#include "../detail/polynomial_trig.hpp"
 
 
 namespace apse {
@@ -152,10 +153,10 @@ template <class T> struct EllipseAreas : EllipseAxes<T> {
         return p;
     }
 
-    /// The radial state at tau in [0, pi/2] (one sin/cos).
+    /// The radial state at tau in [0, pi/2] (one polynomial sin/cos, both >= 0).
     APSE_FUNC RadialPoint<T> radial_point(T tau) const noexcept {
-        // float(pi/2) exceeds pi/2, so its cosine is slightly negative: clamp.
-        return radial_point(tau, max_of(std::cos(tau), T(0)), max_of(std::sin(tau), T(0)));
+        const SinCosValues<T> sc = sin_cos_of_angle(tau);
+        return radial_point(tau, sc.c, sc.s);
     }
 
     /// The parallel state at e = beta − psi in [0, beta], from sin e, cos e and the ellipse's
