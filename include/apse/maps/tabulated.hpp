@@ -220,7 +220,7 @@ private:
 
     /// sample(u), counting the table-walk steps in `iterations` (0 when the uniform guess was the
     /// bin).
-    APSE_FUNC DirectionSample<T> sample_counted(const vec2& u, int& iterations) const noexcept {
+    APSE_HOT_INLINE DirectionSample<T> sample_counted(const vec2& u, int& iterations) const noexcept {
         iterations = 0;
         bool ok = valid_;
         const vec2 uc = detail::clamp_unit(u, ok);
@@ -318,7 +318,7 @@ private:
     friend struct detail::DiagnosticsAccess;
 
     /// sample(u), counting the tabulated map's table-walk steps in `iterations`.
-    APSE_FUNC DirectionSample<T> sample_counted(const vec2& u, int& iterations) const noexcept {
+    APSE_HOT_INLINE DirectionSample<T> sample_counted(const vec2& u, int& iterations) const noexcept {
         return detail::ld_sample(radial_, !radial_.empty(), u, iterations);
     }
 
