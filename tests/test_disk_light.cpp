@@ -145,8 +145,10 @@ TEMPLATE_TEST_CASE("disk light from a stored DiskFrame: every map, plain and cos
         CHECK(light.empty());
         CHECK(light.sample(Vec2<T>(T(0.4), T(0.6))).pdf == T(0));
     }
-    // o in the disk's plane, or not finite: empty
-    CHECK(apse::project_disk(Vec3<T>(c + T(3) * frame.e1), frame).empty());
+    // o in the disk's plane (exactly: a disk in the plane z = -0.5), or not finite: empty
+    const apse::DiskFrame<T> flat = apse::DiskFrame<T>::make(c, Vec3<T>(0, 0, 1), r);
+    CHECK(apse::project_disk(Vec3<T>(T(3), T(-1), T(-0.5)), flat).empty());
+    CHECK_FALSE(apse::project_disk(Vec3<T>(T(3), T(-1), T(-0.25)), flat).empty());
     CHECK(apse::project_disk(Vec3<T>(nan, 0, 0), frame).empty());
 }
 

@@ -106,10 +106,15 @@ public:
         rows_[1] = rows_[0] + stride;                          // (i, j + 1)
         rows_[2] = rows_[0] + table.ratio_nodes * stride;      // (i + 1, j)
         rows_[3] = rows_[2] + stride;                          // (i + 1, j + 1)
-        weights_[0] = (T(1) - wx) * (T(1) - wy);
-        weights_[1] = (T(1) - wx) * wy;
-        weights_[2] = wx * (T(1) - wy);
-        weights_[3] = wx * wy;
+        // The weights carry the factor N: the blended CDF runs from 0 to N, so a bin's mass is
+        // already the density's factor N dF (density()); a separate factor N, multiplied into
+        // the pdf's constant by -ffast-math's reassociation, would overflow for the smallest
+        // ellipses (1/Omega is then within a factor N of the largest finite number).
+        const T n = T(bins_);
+        weights_[0] = (T(1) - wx) * (T(1) - wy) * n;
+        weights_[1] = (T(1) - wx) * wy * n;
+        weights_[2] = wx * (T(1) - wy) * n;
+        weights_[3] = wx * wy * n;
     }
 
     /// The ellipse this map samples.
@@ -160,12 +165,12 @@ private:
     /// fraction u2 in [0, 1] (not checked; the map is valid), with the table-walk steps in
     /// `steps`: sample() after fold_quadrant(u1), TabulatedLdRadialMap's after the concentric map.
     APSE_HOT_INLINE DirectionSample<T> sample_folded(const detail::QuadrantFold<T>& fold, T u2, int& steps) const noexcept {
-        const T f = fold.fraction;
-        // the bin k with F(k) <= f < F(k + 1) (F(0) = 0, F(N) = 1 up to rounding; f >= F(N) gives
+        const T f = fold.fraction * T(bins_);  // the blended CDF runs from 0 to N
+        // the bin k with F(k) <= f < F(k + 1) (F(0) = 0, F(N) = N up to rounding; f >= F(N) gives
         // the last bin): the blended CDF is within a few % of linear in lambda, so start at the
         // bin of the uniform CDF and walk (measured: <= 0.5 steps on average, at most 3; the
         // loops are bounded by N in any case).
-        int lo = int(f * T(bins_));
+        int lo = int(f);
         lo = lo < 0 ? 0 : (lo > bins_ - 1 ? bins_ - 1 : lo);
         T f0 = cdf_at(lo), f1 = cdf_at(lo + 1);
         steps = 0;
@@ -207,7 +212,7 @@ private:
         const Azimuth az = azimuth_of(x, y);
         const T f0 = cdf_at(az.bin), f1 = cdf_at(az.bin + 1);
         const T s = detail::clamp(az.lambda / bin_width_ - T(az.bin), T(0), T(1));
-        const T f = detail::clamp(f0 + s * (f1 - f0), T(0), T(1));
+        const T f = detail::clamp((f0 + s * (f1 - f0)) * inv_bins_, T(0), T(1));
         const T u1 = detail::unfold_quadrant_fraction(q, f);
         T u2 = T(1);
         if (l.z > T(0)) {
@@ -254,11 +259,12 @@ private:
                (weights_[2] * T(rows_[2][k]) + weights_[3] * T(rows_[3][k]));
     }
 
-    /// Solid-angle density for a bin of blended mass df at an azimuth where
-    /// w = (1 + C) |(cos lambda, kappa sin lambda)|^2 = (1 + C) kappa^2 / (kappa^2 cos^2 tau + sin^2 tau),
-    /// C = cos theta_max (file comment's pdf; a sample has w without a division).
+    /// Solid-angle density for a bin of blended mass df (N dF: the weights carry N) at an azimuth
+    /// where w = (1 + C) |(cos lambda, kappa sin lambda)|^2
+    /// = (1 + C) kappa^2 / (kappa^2 cos^2 tau + sin^2 tau), C = cos theta_max (file comment's
+    /// pdf; a sample has w without a division).
     APSE_FUNC T density(T df, T w) const noexcept {
-        const T p = ((df * T(bins_)) * w) * pdf_scale_;
+        const T p = (df * w) * pdf_scale_;  // df = N dF (the weights carry N)
         return detail::is_finite(p) ? detail::max_of(p, T(0)) : T(0);
     }
 
