@@ -8,8 +8,8 @@
 /// per ~4-5 on Zen 3), and apse's set-up code and elliptic integrals are bound by it; SSE
 /// `sqrtpd`/`divpd` compute two lanes for about the price of one (measured: R_F -12%, R_J -9%,
 /// disk projection -6%). In float the scalar operations are faster (their throughput is higher,
-/// and packing two floats into a vector adds latency: measured, float projection -7 %, tabulated
-/// LD-radial set-up + 1 sample -6 % with the scalar form), so float takes them. The results are
+/// and packing two floats into a vector adds latency: measured, float projection -7 to -9 %,
+/// tabulated LD-radial set-up + 1 sample -5.5 to -6 % with the scalar form), so float takes them. The results are
 /// bit-identical either way (IEEE square roots and quotients are correctly rounded). Elsewhere
 /// (CUDA device code, non-x86 hosts, or with `APSE_NO_SIMD` defined) they are the scalar
 /// operations.

@@ -82,9 +82,10 @@ template <class T> APSE_HOT_INLINE SinCosValues<T> sin_cos_quarter_turn(T q) noe
     return {sin_quarter_turn(q), sin_quarter_turn(T(1) - q)};
 }
 
-/// sin and cos of the angle x in [0, pi/2] (clamped into it): sin_cos_quarter_turn(x 2/pi),
-/// within 3 eps absolute (the quotient's rounding adds at most half an ulp of the angle) and
-/// a few eps relative for small x (the sine is x (1 + O(x^2))).
+/// sin and cos of the angle x in [0, pi/2] (clamped into it): sin_cos_quarter_turn(x 2/pi). Its
+/// error is sin_cos_quarter_turn's (2 eps, tested) plus the rounding of x 2/pi (half an ulp of
+/// the quarter-turn fraction, i.e. at most ~eps of the angle, times a derivative <= 1): within
+/// ~3 eps absolute by that bound, and a few eps relative for small x (the sine is x (1 + O(x^2))).
 template <class T> APSE_HOT_INLINE SinCosValues<T> sin_cos_of_angle(T x) noexcept {
     return sin_cos_quarter_turn(clamp(x * T(0.63661977236758134308), T(0), T(1)));
 }
