@@ -109,7 +109,6 @@ TEMPLATE_TEST_CASE("disk light from a stored DiskFrame: every map, plain and cos
     const double self_tol = sizeof(T) == 4 ? 1e-3 : 1e-9;
     const glm::dvec3 cd(c), nd = glm::normalize(glm::dvec3(n));
     apse_test::Rng rng(17);
-    int compared = 0;
     for (int cosine = 0; cosine < 2; ++cosine)
         for (apse::DiskMap m : kAllMaps) {
             INFO("map " << int(m) << (cosine ? ", cosine-weighted" : ""));
@@ -128,10 +127,8 @@ TEMPLATE_TEST_CASE("disk light from a stored DiskFrame: every map, plain and cos
                 CHECK(std::fabs(double(s.pdf) / double(p.pdf) - 1) <= tol);
                 CHECK(glm::length(glm::dvec3(s.direction) - glm::dvec3(p.direction)) <= tol);
                 CHECK(std::fabs(glm::dot(glm::dvec3(s.point) - cd, nd)) <= tol);
-                ++compared;
             }
         }
-    CHECK(compared == 2000);
     // the table-free overloads: exact maps; a tabulated map without a table is the empty light
     CHECK(apse::DiskLight<T>(o, frame).map() == apse::DiskMap::ld_radial);
     CHECK(apse::DiskLight<T>(o, frame, apse::DiskMap::parallel, nr).cosine_weighted());

@@ -108,7 +108,7 @@ template <class T> APSE_FUNC T angle_approx(T s, T c) noexcept {
 /// correction's own error is below (2e-8)^3/6).
 template <class T> APSE_FUNC T angle_of(T s, T c) noexcept {
     const T a = angle_approx(s, c);
-    const SinCosValues<T> r = sin_cos_quarter_turn(clamp(a * T(0.63661977236758134308), T(0), T(1)));
+    const SinCosValues<T> r = sin_cos_of_angle(a);
     return a + (s * r.c - c * r.s);
 }
 
