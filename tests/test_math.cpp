@@ -190,3 +190,22 @@ TEMPLATE_TEST_CASE("arc_ratio against atan2 in long double", "[math][trig]", flo
     WARN("arc_ratio: max error " << double(worst));
 }
 
+
+TEMPLATE_TEST_CASE("cube_root_approx against cbrt in long double", "[math]", float, double) {
+    using T = TestType;
+    // x log-spaced over the documented range [2^-100, 2^100] (and its ends). Bound: the bit
+    // estimate is within 3.2e-2; one Halley step (float) leaves ~0.6 (3.2e-2)^3 = 2.1e-5 (measured
+    // 2.09e-5; 2.2e-5 allows for FMA contraction and the float rounding of the step), two
+    // (double) ~(2.1e-5)^3, below the rounding of the steps themselves: measured 6.1e-15, 1e-14
+    // allows for FMA contraction. A wrong magic constant or a missing step is
+    // orders of magnitude beyond either bound.
+    long double worst = 0;
+    for (int i = 0; i <= 200000; ++i) {
+        const T x = T(std::ldexp(1.0L, -100) * std::pow(2.0L, 200.0L * i / 200000));
+        const long double ref = std::cbrt((long double)x);
+        worst = std::max(worst, std::fabs(apse::detail::cube_root_approx(x) / ref - 1));
+    }
+    INFO("max relative error " << double(worst));
+    CHECK(worst <= (sizeof(T) == 4 ? 2.2e-5L : 1e-14L));
+    CHECK(apse::detail::cube_root_approx(T(8)) == Approx(2).epsilon(sizeof(T) == 4 ? 2.2e-5 : 1e-14));
+}

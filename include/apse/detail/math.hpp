@@ -94,6 +94,41 @@ template <class T> APSE_FUNC bool is_finite(T x) noexcept {
 /// x * x.
 template <class T> APSE_FUNC constexpr T sqr(T x) noexcept { return x * x; }
 
+/// x^(1/3) for x in [2^-100, 2^100] (not checked), relative error 2.1e-5 in float and
+/// 6.1e-15 in double (measured): the exponent divided by 3 on the bits (the initial estimate of fdlibm's cbrt,
+/// within 3.2e-2), then Halley steps y (y^3 + 2x)/(2y^3 + x), each cubing the error (one in
+/// float, two in double). For first guesses: no library call, no range reduction.
+template <class T> APSE_FUNC T cube_root_approx(T x) noexcept {
+    static_assert(is_real_type<T>(), "apse: T must be float or double");
+    T y;
+    if constexpr (sizeof(T) == sizeof(float)) {
+#if defined(__CUDA_ARCH__)
+        y = T(__uint_as_float(__float_as_uint(float(x)) / 3u + 0x2a5119f2u));
+#else
+        std::uint32_t b;
+        std::memcpy(&b, &x, sizeof b);
+        b = b / 3u + 0x2a5119f2u;
+        std::memcpy(&y, &b, sizeof y);
+#endif
+    } else {
+#if defined(__CUDA_ARCH__)
+        y = T(__longlong_as_double(
+            (long long)(std::uint64_t(__double_as_longlong(double(x))) / 3u + 0x2a9f789300000000ull)));
+#else
+        std::uint64_t b;
+        std::memcpy(&b, &x, sizeof b);
+        b = b / 3u + 0x2a9f789300000000ull;
+        std::memcpy(&y, &b, sizeof y);
+#endif
+    }
+    for (int step = 0; step < (sizeof(T) == sizeof(float) ? 1 : 2); ++step) {
+        const T y3 = y * y * y;
+        y *= (y3 + T(2) * x) / (T(2) * y3 + x);
+    }
+    return y;
+}
+
+
 /// The smaller of a and b (b if either is NaN).
 template <class T> APSE_FUNC constexpr T min_of(T a, T b) noexcept { return a < b ? a : b; }
 

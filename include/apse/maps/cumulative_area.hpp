@@ -32,8 +32,9 @@
 /// P = (a sqrt(S), b cos alpha sin psi, b cos alpha cos psi)/N, so x_max(psi) = a sqrt(S)/N and
 /// C = b cos alpha cos psi / N. Every term is non-negative: no cancellation, also where the
 /// Legendre/Carlson form of docs/math.md §5 loses digits (nearly hemispherical ellipses). The parallel
-/// map solves for the distance e = beta − psi to the end of the minor axis, so sin(beta − psi) is
-/// exact near the end where the slice shrinks to a point.
+/// map solves for t = tan(e/2), e = beta − psi the distance to the end of the minor axis, so
+/// sin(beta − psi) is exact near the end where the slice shrinks to a point, and sin e, cos e are
+/// rational in t (no trigonometric call per iteration).
 
 #include <cmath>
 
@@ -61,15 +62,16 @@ template <class T> struct RadialPoint {
     T slope;    ///< d density / dtau
 };
 
-/// The parallel map's state at one e = beta − psi in [0, beta].
+/// The parallel map's state at one t = tan(e/2), e = beta − psi in [0, beta] the distance of the
+/// slice from the end of the minor axis (sin e and cos e are rational in t: no trigonometric call).
 template <class T> struct ParallelPoint {
-    T e;                ///< distance (radians) from the end of the minor axis
+    T t;                ///< tan(e/2)
     T sin_psi, cos_psi; ///< the slice angle psi = beta − e
     T x_max;            ///< half-width of the slice: sin of its half-arc, a sqrt(S)/N
     T ct, st, c_max;    ///< the boundary point P in tau form (for the radial sector)
     T root_s, n;        ///< sqrt(S) and N
-    T density;          ///< d(edge area)/de = 2 x_max
-    T slope;            ///< d density / de
+    T density;          ///< d(edge area)/dt = 2 x_max de/dt = 4 x_max/(1 + t^2)
+    T slope;            ///< d density / dt
 };
 
 /// The ellipse's semi-axis constants that the polar step of the radial maps needs (the boundary
@@ -159,11 +161,19 @@ template <class T> struct EllipseAreas : EllipseAxes<T> {
         return radial_point(tau, sc.c, sc.s);
     }
 
-    /// The parallel state at e = beta − psi in [0, beta], from sin e, cos e and the ellipse's
-    /// sin beta = b, cos beta = cb (angle differences without cancellation near the end).
-    APSE_FUNC ParallelPoint<T> parallel_point(T e, T se, T ce) const noexcept {
+    /// The parallel state at t = tan(e/2), e = beta − psi in [0, beta]: sin e = 2t/(1 + t^2),
+    /// cos e = (1 − t^2)/(1 + t^2), and sin psi, cos psi as differences of angles from the
+    /// ellipse's sin beta = b, cos beta = cb (no cancellation near the end, where e is small).
+    APSE_FUNC ParallelPoint<T> parallel_point(T t) const noexcept {
+        const T q = T(1) / (T(1) + t * t);
+        return parallel_point(t, T(2) * t * q, (T(1) - t * t) * q);
+    }
+
+    /// The parallel state at t = tan(e/2) with known sin e = se, cos e = ce.
+    APSE_FUNC ParallelPoint<T> parallel_point(T t, T se, T ce) const noexcept {
         ParallelPoint<T> p;
-        p.e = e;
+        p.t = t;
+        const T q = T(0.5) * (T(1) + ce);  // 1/(1 + t^2) = cos^2(e/2)
         p.sin_psi = max_of(b * ce - cb * se, T(0));      // sin(beta − e); psi >= 0
         p.cos_psi = cb * ce + b * se;                    // cos(beta − e), positive terms
         const T s = se * (b * p.cos_psi + cb * p.sin_psi);  // sin(beta − psi) sin(beta + psi)
@@ -176,19 +186,17 @@ template <class T> struct EllipseAreas : EllipseAxes<T> {
         p.ct = p.root_s * inv_n;
         p.st = ca * p.sin_psi * inv_n;
         p.c_max = b_ca * p.cos_psi * inv_n;
-        p.density = T(2) * p.x_max;
-        // d x_max/dpsi = −(a b cos alpha / N^2)^2 sin psi cos psi / x_max; d/de = −d/dpsi.
-        const T t = (a * inv_n) * (b_ca * inv_n);  // O(1) for every size (no under/overflow)
-        p.slope = p.x_max > T(0) ? T(2) * t * t * p.sin_psi * p.cos_psi / p.x_max : T(0);
+        // In e: density 2 x_max, slope d(2 x_max)/de = 2 (a b cos alpha / N^2)^2 sin psi cos psi
+        // / x_max; with de/dt = 2q: density_t = 2q density_e, slope_t = 4q^2 (slope_e − t density_e).
+        const T density_e = T(2) * p.x_max;
+        const T r = (a * inv_n) * (b_ca * inv_n);  // O(1) for every size (no under/overflow)
+        const T slope_e = p.x_max > T(0) ? T(2) * r * r * p.sin_psi * p.cos_psi / p.x_max : T(0);
+        p.density = T(2) * q * density_e;
+        p.slope = T(4) * q * q * (slope_e - t * density_e);
         return p;
     }
 
-    /// The parallel state at e in [0, beta] (one sin/cos).
-    APSE_FUNC ParallelPoint<T> parallel_point(T e) const noexcept {
-        return parallel_point(e, max_of(std::sin(e), T(0)), std::cos(e));
-    }
-
-    /// Half-area I(psi) between the slices 0 and psi = beta − e (file comment): the radial sector
+    /// Half-area I(psi) between the slices 0 and psi (file comment): the radial sector
     /// to the boundary point plus the geodesic triangle, doubled. Relative accuracy a few eps.
     APSE_NOINLINE APSE_FUNC T parallel_half_area(const ParallelPoint<T>& p) const noexcept {
         const T sector = radial_area(p.ct, p.st, p.c_max);
@@ -222,17 +230,18 @@ template <class T> struct RadialAreaModel {
     }
 };
 
-/// The parallel map's edge area J(e) = Omega/2 − I(beta − e) (the part of one half of the ellipse
-/// beyond the slice psi = beta − e) as a model for invert_area: variable e in [0, beta], density
-/// 2 x_max, singular (square root) at e = 0, so rho(e) = e.
+/// The parallel map's edge area J = Omega/2 − I(psi) (the part of one half of the ellipse beyond
+/// the slice psi = beta − e) as a model for invert_area: variable t = tan(e/2) in [0, tan(beta/2)],
+/// density 4 x_max/(1 + t^2), singular (square root) at t = 0, so rho(t) = t (the other
+/// singularities, t = ±i and t = tan beta, are farther from every t in the bracket).
 template <class T> struct ParallelAreaModel {
     using Point = ParallelPoint<T>;
     const EllipseAreas<T>* k;
     T half;  ///< Omega / 2
-    APSE_FUNC Point point(T e) const noexcept { return k->parallel_point(e); }
+    APSE_FUNC Point point(T t) const noexcept { return k->parallel_point(t); }
     APSE_FUNC T area(const Point& p) const noexcept { return half - k->parallel_half_area(p); }
-    APSE_FUNC T variable(const Point& p) const noexcept { return p.e; }
-    APSE_FUNC T radius_sq(T e) const noexcept { return e * e; }
+    APSE_FUNC T variable(const Point& p) const noexcept { return p.t; }
+    APSE_FUNC T radius_sq(T t) const noexcept { return t * t; }
 };
 
 }  // namespace detail

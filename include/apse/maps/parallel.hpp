@@ -24,13 +24,14 @@ namespace apse {
 namespace detail {
 
 /// First guess for the parallel map's slice, as the distance e = beta − psi from the end of the
-/// minor axis, for the edge fraction g of a half-ellipse: a blend, weighted by the ellipse's
-/// shape w in [0, 1], of the planar-ellipse slice (the half-area of an ellipse in the
-/// (psi, x) cylindrical equal-area plane, 1 − sin(theta) with (2 theta + sin 2 theta)/pi = 1 − g,
-/// by a fitted polynomial in s = (6 pi g)^(1/3), max error 1.1e-5) and the rectangle slice
-/// (e = g beta: the limit of very wide ellipses whose slices keep their full width).
+/// minor axis, for the edge fraction g of a half: a blend, weighted by the ellipse's shape w in
+/// [0, 1], of the planar-ellipse slice (the half-area of an ellipse in the (psi, x) cylindrical
+/// equal-area plane, 1 − sin(theta) with (2 theta + sin 2 theta)/pi = 1 − g, by a fitted
+/// polynomial in s = (6 pi g)^(1/3), max error 1.1e-5; s by cube_root_approx, with g
+/// kept above 2^-90) and the rectangle slice (e = g beta: the limit of very wide ellipses whose
+/// slices keep their full width).
 template <class T> APSE_FUNC T parallel_guess(T g, T beta, T w) noexcept {
-    const T s = std::cbrt(T(6) * pi_v<T> * g);
+    const T s = cube_root_approx(T(6) * pi_v<T> * max_of(g, T(0x1p-90)));
     const T s2 = s * s;
     const T planar = s2 * (T(0.12503731796729795) +
                            s2 * (T(0.0014906081882330561) +
@@ -44,9 +45,10 @@ template <class T> APSE_FUNC T parallel_guess(T g, T beta, T w) noexcept {
 /// Parallel area-preserving map of the unit square onto a spherical ellipse (docs/math.md §5).
 ///
 /// Construction precomputes the solid angle (one R_J). Each sample folds u1 onto one half of the
-/// ellipse, solves the cumulative-area equation for the distance e = beta − psi of the slice from
-/// the end of the minor axis (cancellation-free sector + triangle form, maps/cumulative_area.hpp)
-/// by bracketed Halley/Newton with the exact density 2 x_max, from a shape-blended first guess,
+/// ellipse, solves the cumulative-area equation for t = tan(e/2), e = beta − psi the distance of the
+/// slice from the end of the minor axis (cancellation-free sector + triangle form,
+/// maps/cumulative_area.hpp; sin e and cos e rational in t) by bracketed Halley/Newton with the
+/// exact density 4 x_max/(1 + t^2), from a shape-blended first guess,
 /// one closed-form evaluation and cheap Hermite increments after it (detail/inversion.hpp);
 /// relative stopping rule 4 eps of Omega/2. Accuracy (measured, docs/maps.md): cumulative-area
 /// error <= 1e-14 (double) / 1e-6 (float) relative to Omega/2. Trivially copyable.
@@ -59,7 +61,8 @@ public:
 
     /// Builds the map for `ellipse` (empty allowed: every sample then has pdf 0).
     APSE_FUNC explicit ParallelMap(const SphericalEllipse<T>& ellipse) noexcept
-        : ellipse_(ellipse), areas_(detail::EllipseAreas<T>::make(ellipse)), beta_(ellipse.beta()) {
+        : ellipse_(ellipse), areas_(detail::EllipseAreas<T>::make(ellipse)), beta_(ellipse.beta()),
+          t_max_(areas_.b / (T(1) + areas_.cb)) {
         omega_ = detail::solid_angle_of(ellipse);
         valid_ = !ellipse.empty() && omega_ > T(0) && detail::is_finite(omega_);
         inv_omega_ = valid_ ? T(1) / omega_ : T(0);
@@ -101,8 +104,13 @@ public:
         const vec3 l = detail::normalize_direction(ellipse_.to_local(d), ok);
         if (!ok) return vec2(T(0));
         const T side = l.y < T(0) ? T(-1) : T(1);
-        const T psi = std::atan2(std::fabs(l.y), l.z);
-        const detail::ParallelPoint<T> p = areas_.parallel_point(detail::clamp(beta_ - psi, T(0), beta_));
+        // the slice angle psi of l, (sin psi, cos psi) = (|y|, z)/|(y, z)|, and t = tan(e/2) of
+        // e = beta − psi: sin e / (1 + cos e); 0 beyond the end of the minor axis (psi > beta)
+        const T ryz = std::sqrt(l.y * l.y + l.z * l.z);
+        const T sp = ryz > T(0) ? std::fabs(l.y) / ryz : T(0), cp = ryz > T(0) ? l.z / ryz : T(1);
+        const T se = areas_.b * cp - areas_.cb * sp, ce = areas_.cb * cp + areas_.b * sp;
+        const T t = se > T(0) ? detail::min_of(se / (T(1) + ce), t_max_) : T(0);
+        const detail::ParallelPoint<T> p = areas_.parallel_point(t);
         const T g = detail::clamp((half_ - areas_.parallel_half_area(p)) / half_, T(0), T(1));
         T u2 = T(0.5);
         if (p.x_max > T(0)) {
@@ -129,15 +137,14 @@ private:
     friend struct detail::DiagnosticsAccess;
     friend struct detail::MapAccess;
 
-    /// Solves the edge-area equation J(e) = g Omega/2 (g in [0, 1]: the fraction of a half
+    /// Solves the edge-area equation J(t) = g Omega/2 (g in [0, 1]: the fraction of a half
     /// beyond the slice) for the slice state, with the inversion iterations in `iterations`.
     APSE_FUNC detail::ParallelPoint<T> solve_half(T g, int& iterations) const noexcept {
         iterations = 0;
-        const T beta = beta_;
         if (!(g > T(0))) return areas_.parallel_point(T(0));
-        if (!(g < T(1))) return areas_.parallel_point(beta);
+        if (!(g < T(1))) return areas_.parallel_point(t_max_);
         const detail::ParallelAreaModel<T> model{&areas_, half_};
-        const auto r = detail::invert_area(model, g * half_, T(0), beta,
+        const auto r = detail::invert_area(model, g * half_, T(0), t_max_,
                                            guess_half(g),
                                            detail::area_tolerance<T>() * half_);
         iterations = r.iterations;
@@ -145,15 +152,17 @@ private:
     }
 
     /// The first guess of solve_half for the edge fraction g in [0, 1] (the shape-blended
-    /// slice, detail parallel_guess; one sin/cos).
+    /// slice, detail parallel_guess; one sin/cos, t = sin e/(1 + cos e)).
     APSE_FUNC detail::ParallelPoint<T> guess_half(T g) const noexcept {
-        return areas_.parallel_point(detail::parallel_guess(detail::clamp(g, T(0), T(1)), beta_, blend_));
+        const T e = detail::parallel_guess(detail::clamp(g, T(0), T(1)), beta_, blend_);
+        const T se = std::sin(e), ce = std::cos(e);
+        return areas_.parallel_point(detail::min_of(se / (T(1) + ce), t_max_), se, ce);
     }
 
     /// Half-area I(psi) between the slices 0 and psi in [0, beta] (docs/math.md §5 I(psi),
     /// cancellation-free; for tests, through detail::MapAccess). Omega_p(psi) = Omega/2 ± I(|psi|).
     APSE_FUNC T half_area(T psi) const noexcept {
-        return areas_.parallel_half_area(areas_.parallel_point(detail::clamp(beta_ - psi, T(0), beta_)));
+        return areas_.parallel_half_area(areas_.parallel_point(std::tan(T(0.5) * detail::clamp(beta_ - psi, T(0), beta_))));
     }
 
     /// sample(u), counting the inversion iterations in `iterations` (detail/inversion.hpp).
@@ -177,6 +186,7 @@ private:
     SphericalEllipse<T> ellipse_;
     detail::EllipseAreas<T> areas_;
     T beta_;  ///< the minor semi-arc (one atan, at set-up)
+    T t_max_; ///< tan(beta/2) = sin beta / (1 + cos beta): the end of the bracket in t
     T omega_, inv_omega_, half_, blend_;
     bool valid_;
 };
