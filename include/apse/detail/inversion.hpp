@@ -63,6 +63,9 @@ APSE_FUNC AreaInversion<typename Model::Point> invert_area(const Model& model, T
     T area = T(0);
     bool closed_form = true;  // evaluate the closed form at the top of the loop (one call site)
     const T limit2 = sqr(hermite_step_limit<T>());
+    // 1/A' at the start (computed while the closed form is evaluated): the Halley step's unit
+    T scale = T(1) / p.density;
+    if (!(scale > T(0) && is_finite(scale))) scale = T(1);
     int it = 0;
     for (;;) {
         if (closed_form) area = model.area(p);
@@ -71,10 +74,12 @@ APSE_FUNC AreaInversion<typename Model::Point> invert_area(const Model& model, T
         if (g < T(0)) lo = x; else hi = x;
         if (it >= max_area_iterations || !(hi - lo > T(4) * epsilon<T>() * max_of(std::fabs(lo), std::fabs(hi))))
             break;
-        // Halley step (cubic convergence); Newton when the correction factor is far from 1.
-        const T newton = -g / p.density;
-        const T r = T(0.5) * newton * p.slope / p.density;
-        T next = x + ((r > T(-0.5) && r < T(0.5)) ? newton / (T(1) + r) : newton);
+        // Halley step (cubic convergence) n/(1 + r), n = −g/A', r = n A''/(2A'), written with one
+        // division, −2 g A'/(2 A'^2 − g A''), and Newton's −g/A' when |r| >= 1/2 (|g A''| >= A'^2);
+        // g, A' and A'' in units of the first density, so that no product underflows.
+        const T gs = g * scale, ds = p.density * scale, gss = gs * (p.slope * scale), d2 = ds * ds;
+        const bool halley = std::fabs(gss) < d2;
+        T next = x - (halley ? T(2) * gs * ds : gs) / (halley ? T(2) * d2 - gss : ds);
         if (!(next > lo && next < hi)) next = T(0.5) * (lo + hi);
         const Point q = model.point(next);
         const T d = next - x;
