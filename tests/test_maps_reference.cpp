@@ -209,8 +209,8 @@ TEMPLATE_TEST_CASE("inversion: CDF error and iteration statistics", "[maps][refe
             const auto pp = apse::detail::MapAccess::solve_half(parallel, f, it);
             sum_p += it;
             max_p = std::max(max_p, it);
-            // slice of the solution psi = beta - e, e = 2 atan(t); edge area = half - I(psi)
-            const LD psi = LD(e.beta()) - 2 * std::atan(LD(pp.t));
+            // slice of the solution psi = beta - e, e = 2 atan(t tan(beta/2)); edge area = half - I(psi)
+            const LD psi = LD(e.beta()) - 2 * std::atan(LD(pp.t) * std::tan(LD(e.beta()) / 2));
             const double ep = double(std::fabs(half - q.parallel(psi) - LD(f) * half) / half);
             worst_p = std::max(worst_p, ep);
             ++count;

@@ -62,15 +62,16 @@ template <class T> struct RadialPoint {
     T slope;    ///< d density / dtau
 };
 
-/// The parallel map's state at one t = tan(e/2), e = beta − psi in [0, beta] the distance of the
-/// slice from the end of the minor axis (sin e and cos e are rational in t: no trigonometric call).
+/// The parallel map's state at one slice position t = tan(e/2)/tan(beta/2) in [0, 1], e = beta −
+/// psi the distance of the slice from the end of the minor axis (sin e and cos e are rational in
+/// t: no trigonometric call).
 template <class T> struct ParallelPoint {
-    T t;                ///< tan(e/2)
+    T t;                ///< tan(e/2)/tan(beta/2): 0 at the end of the minor axis, 1 on the major axis
     T sin_psi, cos_psi; ///< the slice angle psi = beta − e
     T x_max;            ///< half-width of the slice: sin of its half-arc, a sqrt(S)/N
+    T cos_arc;          ///< cos of the slice's half-arc, b cos alpha / N = sqrt(1 − x_max^2)
     T ct, st, c_max;    ///< the boundary point P in tau form (for the radial sector)
-    T root_s, n;        ///< sqrt(S) and N
-    T density;          ///< d(edge area)/dt = 2 x_max de/dt = 4 x_max/(1 + t^2)
+    T density;          ///< d(edge area)/dt
     T slope;            ///< d density / dt
 };
 
@@ -105,7 +106,6 @@ template <class T> struct EllipseAreas : EllipseAxes<T> {
     T m;             ///< the elliptic parameter (tan^2 alpha − tan^2 beta)/(1 + tan^2 alpha)
     T k1;            ///< a b cos^2 beta / (3 cos alpha)
     T cb_over_ca2;   ///< (cos beta / cos alpha)^2
-    T b_ca;          ///< b cos alpha
     T ba, ba2;       ///< b / a and its square
 
     static APSE_FUNC EllipseAreas make(const SphericalEllipse<T>& e) noexcept {
@@ -119,7 +119,6 @@ template <class T> struct EllipseAreas : EllipseAxes<T> {
         k.m = e.m;
         k.k1 = k.ab * k.cb2 / (T(3) * k.ca);
         k.cb_over_ca2 = sqr(k.cb / k.ca);
-        k.b_ca = k.b * k.ca;
         k.ba = k.a > T(0) ? k.b / k.a : T(0);
         k.ba2 = k.ba * k.ba;
         return k;
@@ -160,50 +159,68 @@ template <class T> struct EllipseAreas : EllipseAxes<T> {
         const SinCosValues<T> sc = sin_cos_of_angle(tau);
         return radial_point(tau, sc.c, sc.s);
     }
+};
 
-    /// The parallel state at t = tan(e/2), e = beta − psi in [0, beta]: sin e = 2t/(1 + t^2),
-    /// cos e = (1 − t^2)/(1 + t^2), and sin psi, cos psi as differences of angles from the
-    /// ellipse's sin beta = b, cos beta = cb (no cancellation near the end, where e is small).
-    APSE_FUNC ParallelPoint<T> parallel_point(T t) const noexcept {
-        const T q = T(1) / (T(1) + t * t);
-        return parallel_point(t, T(2) * t * q, (T(1) - t * t) * q);
+/// EllipseAreas with the parallel map's constants and its slice states (file comment, §5).
+template <class T> struct ParallelAreas : EllipseAreas<T> {
+    using EllipseAreas<T>::a;
+    using EllipseAreas<T>::b;
+    using EllipseAreas<T>::ca;
+    using EllipseAreas<T>::cb;
+    using EllipseAreas<T>::ca2;
+    using EllipseAreas<T>::radial_area;
+    T k_e;    ///< 1/(1 + cos beta): sin e / b = 2 t q k_e
+    T t_max;  ///< tan(beta/2) = b k_e: the slice position's scale
+
+    static APSE_FUNC ParallelAreas make(const SphericalEllipse<T>& e) noexcept {
+        ParallelAreas k;
+        static_cast<EllipseAreas<T>&>(k) = EllipseAreas<T>::make(e);
+        k.k_e = T(1) / (T(1) + k.cb);
+        k.t_max = k.b * k.k_e;
+        return k;
     }
 
-    /// The parallel state at t = tan(e/2) with known sin e = se, cos e = ce.
-    APSE_FUNC ParallelPoint<T> parallel_point(T t, T se, T ce) const noexcept {
+    /// The parallel state at t = tan(e/2)/tan(beta/2) in [0, 1]. With q = 1/(1 + tan^2(e/2)):
+    /// sin e = 2 t tan(beta/2) q and cos e = 1 − 2 tan^2(e/2) q; everything that scales with the
+    /// ellipse is carried relative to b = sin beta (sin e / b, sin psi / b, S/b^2, N/b), so
+    /// nothing underflows for tiny ellipses and no rescaling is needed (N/b = sqrt(cos^2 alpha +
+    /// a^2 S/b^2), both terms at most 1).
+    APSE_FUNC ParallelPoint<T> parallel_point(T t) const noexcept {
         ParallelPoint<T> p;
         p.t = t;
-        const T q = T(0.5) * (T(1) + ce);  // 1/(1 + t^2) = cos^2(e/2)
-        p.sin_psi = max_of(b * ce - cb * se, T(0));      // sin(beta − e); psi >= 0
-        p.cos_psi = cb * ce + b * se;                    // cos(beta − e), positive terms
-        const T s = se * (b * p.cos_psi + cb * p.sin_psi);  // sin(beta − psi) sin(beta + psi)
-        p.root_s = std::sqrt(max_of(s, T(0)));
-        // N = |(b cos alpha, a sqrt(S))|, scaled so that neither square underflows
-        const T n1 = b_ca, n2 = a * p.root_s, nm = max_of(n1, n2);
-        p.n = nm > T(0) ? nm * std::sqrt(sqr(n1 / nm) + sqr(n2 / nm)) : T(0);
-        const T inv_n = T(1) / p.n;
-        p.x_max = a * p.root_s * inv_n;
-        p.ct = p.root_s * inv_n;
-        p.st = ca * p.sin_psi * inv_n;
-        p.c_max = b_ca * p.cos_psi * inv_n;
+        const T th = t * t_max;                         // tan(e/2)
+        const T q = T(1) / (T(1) + th * th);
+        const T se_b = T(2) * t * q * k_e;              // sin e / b
+        const T ce = T(1) - T(2) * th * th * q;         // cos e
+        const T sp_b = max_of(ce - cb * se_b, T(0));    // sin psi / b = (b cos e − cos beta sin e)/b
+        p.sin_psi = b * sp_b;
+        p.cos_psi = cb * ce + b * b * se_b;             // cos(beta − e), positive terms
+        const T sigma = max_of(se_b * (p.cos_psi + cb * sp_b), T(0));  // S/b^2, S = sin(beta − psi) sin(beta + psi)
+        const T root_sigma = std::sqrt(sigma);
+        const T d = std::sqrt(ca2 + a * a * sigma);     // N/b
+        const T inv_d = T(1) / d;
+        p.x_max = a * root_sigma * inv_d;
+        p.cos_arc = ca * inv_d;
+        p.ct = root_sigma * inv_d;
+        p.st = ca * sp_b * inv_d;
+        p.c_max = ca * p.cos_psi * inv_d;
         // In e: density 2 x_max, slope d(2 x_max)/de = 2 (a b cos alpha / N^2)^2 sin psi cos psi
-        // / x_max; with de/dt = 2q: density_t = 2q density_e, slope_t = 4q^2 (slope_e − t density_e).
+        // / x_max = B/b with B = 2 a cos^2 alpha (sin psi / b) cos psi / ((N/b)^3 sqrt(S/b^2)).
+        // de/dt = 2 q tan(beta/2): density_t = 2 q t_max density_e and
+        // slope_t = 4 q^2 t_max (k_e B − t_max tan(e/2) density_e).
         const T density_e = T(2) * p.x_max;
-        const T r = (a * inv_n) * (b_ca * inv_n);  // O(1) for every size (no under/overflow)
-        const T slope_e = p.x_max > T(0) ? T(2) * r * r * p.sin_psi * p.cos_psi / p.x_max : T(0);
-        p.density = T(2) * q * density_e;
-        p.slope = T(4) * q * q * (slope_e - t * density_e);
+        const T bb = sigma > T(0) ? T(2) * a * ca2 * sp_b * p.cos_psi / (d * d * d * root_sigma) : T(0);
+        p.density = T(2) * q * t_max * density_e;
+        p.slope = T(4) * q * q * t_max * (k_e * bb - t_max * th * density_e);
         return p;
     }
 
-    /// Half-area I(psi) between the slices 0 and psi (file comment): the radial sector
-    /// to the boundary point plus the geodesic triangle, doubled. Relative accuracy a few eps.
+    /// Half-area I(psi) between the slices 0 and psi (file comment): the radial sector to the
+    /// boundary point plus the geodesic triangle, doubled. Relative accuracy a few eps.
     APSE_NOINLINE APSE_FUNC T parallel_half_area(const ParallelPoint<T>& p) const noexcept {
         const T sector = radial_area(p.ct, p.st, p.c_max);
         // (both atan2 arguments divided by N, so that tiny ellipses do not underflow)
-        const T inv_n = T(1) / p.n;
-        const T triangle = T(2) * std::atan2((a * inv_n) * p.root_s * p.sin_psi,
-                                             (T(1) + p.c_max + p.cos_psi) + b_ca * inv_n);
+        const T triangle = T(2) * std::atan2(p.x_max * p.sin_psi, (T(1) + p.c_max + p.cos_psi) + p.cos_arc);
         return T(2) * (sector + triangle);
     }
 };
@@ -231,12 +248,12 @@ template <class T> struct RadialAreaModel {
 };
 
 /// The parallel map's edge area J = Omega/2 − I(psi) (the part of one half of the ellipse beyond
-/// the slice psi = beta − e) as a model for invert_area: variable t = tan(e/2) in [0, tan(beta/2)],
-/// density 4 x_max/(1 + t^2), singular (square root) at t = 0, so rho(t) = t (the other
-/// singularities, t = ±i and t = tan beta, are farther from every t in the bracket).
+/// the slice psi = beta − e) as a model for invert_area: variable t = tan(e/2)/tan(beta/2) in
+/// [0, 1], singular (square root) at t = 0, so rho(t) = t (the other singularities, tan(e/2) =
+/// ±i and e = 2 beta, are farther from every t in the bracket).
 template <class T> struct ParallelAreaModel {
     using Point = ParallelPoint<T>;
-    const EllipseAreas<T>* k;
+    const ParallelAreas<T>* k;
     T half;  ///< Omega / 2
     APSE_FUNC Point point(T t) const noexcept { return k->parallel_point(t); }
     APSE_FUNC T area(const Point& p) const noexcept { return half - k->parallel_half_area(p); }

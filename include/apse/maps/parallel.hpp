@@ -23,21 +23,26 @@
 namespace apse {
 namespace detail {
 
-/// First guess for the parallel map's slice, as the distance e = beta − psi from the end of the
-/// minor axis, for the edge fraction g of a half: a blend, weighted by the ellipse's shape w in
-/// [0, 1], of the planar-ellipse slice (the half-area of an ellipse in the (psi, x) cylindrical
-/// equal-area plane, 1 − sin(theta) with (2 theta + sin 2 theta)/pi = 1 − g, by a fitted
-/// polynomial in s = (6 pi g)^(1/3), max error 1.1e-5; s by cube_root_approx, with g
-/// kept above 2^-90) and the rectangle slice (e = g beta: the limit of very wide ellipses whose
-/// slices keep their full width).
-template <class T> APSE_FUNC T parallel_guess(T g, T beta, T w) noexcept {
+/// First guess for the parallel map's slice position t = tan(e/2)/tan(beta/2), e = beta − psi
+/// the distance from the end of the minor axis, for the edge fraction g of a half. e is a blend,
+/// weighted by the ellipse's shape w in [0, 1], of the planar-ellipse slice (the half-area of an
+/// ellipse in the (psi, x) cylindrical equal-area plane, 1 − sin(theta) with (2 theta + sin 2
+/// theta)/pi = 1 − g, by a fitted polynomial in s = (6 pi g)^(1/3), max error 1.1e-5; s by
+/// cube_root_approx, with g kept above 2^-90) and the rectangle slice (e = g beta: the limit of
+/// very wide ellipses whose slices keep their full width). Then t by the Pade approximant
+/// tan h ~ h (15 − h^2)/(15 − 6 h^2) of both tangents, h = e/2 and beta/2 (`pade` = (15 − 6
+/// (beta/2)^2)/(15 − (beta/2)^2), from the map's set-up): relative error below 3e-4 (beta =
+/// pi/2), far less for smaller ellipses (6.4e-4 (beta/2)^6).
+template <class T> APSE_FUNC T parallel_guess(T g, T beta, T w, T pade) noexcept {
     const T s = cube_root_approx(T(6) * pi_v<T> * max_of(g, T(0x1p-90)));
     const T s2 = s * s;
     const T planar = s2 * (T(0.12503731796729795) +
                            s2 * (T(0.0014906081882330561) +
                                  s2 * (T(0.00010432809161716576) +
                                        s2 * (T(-7.249709538220279e-6) + s2 * T(1.1660217507228629e-6)))));
-    return detail::clamp(beta * (w * planar + (T(1) - w) * g), T(0), beta);
+    const T f = detail::clamp(w * planar + (T(1) - w) * g, T(0), T(1));  // e / beta
+    const T h = T(0.5) * beta * f, h2 = h * h;
+    return min_of(f * pade * (T(15) - h2) / (T(15) - T(6) * h2), T(1));
 }
 
 }  // namespace detail
@@ -61,8 +66,7 @@ public:
 
     /// Builds the map for `ellipse` (empty allowed: every sample then has pdf 0).
     APSE_FUNC explicit ParallelMap(const SphericalEllipse<T>& ellipse) noexcept
-        : ellipse_(ellipse), areas_(detail::EllipseAreas<T>::make(ellipse)), beta_(ellipse.beta()),
-          t_max_(areas_.b / (T(1) + areas_.cb)) {
+        : ellipse_(ellipse), areas_(detail::ParallelAreas<T>::make(ellipse)), beta_(ellipse.beta()) {
         omega_ = detail::solid_angle_of(ellipse);
         valid_ = !ellipse.empty() && omega_ > T(0) && detail::is_finite(omega_);
         inv_omega_ = valid_ ? T(1) / omega_ : T(0);
@@ -72,6 +76,8 @@ public:
         const T rect = T(2) * beta_ * areas_.a;
         const T fill = rect > T(0) ? half_ / rect : T(1);
         blend_ = detail::clamp((T(1) - fill) / (T(1) - pi_v<T> / T(4)), T(0), T(1));
+        const T hb2 = T(0.25) * beta_ * beta_;
+        pade_ = (T(15) - T(6) * hb2) / (T(15) - hb2);
     }
 
     /// The ellipse this map samples.
@@ -104,12 +110,13 @@ public:
         const vec3 l = detail::normalize_direction(ellipse_.to_local(d), ok);
         if (!ok) return vec2(T(0));
         const T side = l.y < T(0) ? T(-1) : T(1);
-        // the slice angle psi of l, (sin psi, cos psi) = (|y|, z)/|(y, z)|, and t = tan(e/2) of
-        // e = beta − psi: sin e / (1 + cos e); 0 beyond the end of the minor axis (psi > beta)
+        // the slice angle psi of l, (sin psi, cos psi) = (|y|, z)/|(y, z)|, and the slice position
+        // t = tan(e/2)/tan(beta/2) of e = beta − psi, tan(e/2) = sin e/(1 + cos e); 0 beyond the
+        // end of the minor axis (psi > beta)
         const T ryz = std::sqrt(l.y * l.y + l.z * l.z);
         const T sp = ryz > T(0) ? std::fabs(l.y) / ryz : T(0), cp = ryz > T(0) ? l.z / ryz : T(1);
         const T se = areas_.b * cp - areas_.cb * sp, ce = areas_.cb * cp + areas_.b * sp;
-        const T t = se > T(0) ? detail::min_of(se / (T(1) + ce), t_max_) : T(0);
+        const T t = se > T(0) ? detail::min_of(se / ((T(1) + ce) * areas_.t_max), T(1)) : T(0);
         const detail::ParallelPoint<T> p = areas_.parallel_point(t);
         const T g = detail::clamp((half_ - areas_.parallel_half_area(p)) / half_, T(0), T(1));
         T u2 = T(0.5);
@@ -119,8 +126,7 @@ public:
                 u2 = T(0.5) * (l.x / p.x_max + T(1));
             } else {
                 // x_max − |x| = ((y^2 + z^2) − (1 − x_max^2)) / (x_max + |x|): accurate near x ~ 1
-                const T bn = areas_.b_ca / p.n;
-                const T gap = (l.y * l.y + l.z * l.z - bn * bn) / (p.x_max + ax);
+                const T gap = (l.y * l.y + l.z * l.z - p.cos_arc * p.cos_arc) / (p.x_max + ax);
                 const T h = T(0.5) * gap / p.x_max;
                 u2 = l.x > T(0) ? T(1) - h : h;
             }
@@ -142,9 +148,9 @@ private:
     APSE_FUNC detail::ParallelPoint<T> solve_half(T g, int& iterations) const noexcept {
         iterations = 0;
         if (!(g > T(0))) return areas_.parallel_point(T(0));
-        if (!(g < T(1))) return areas_.parallel_point(t_max_);
+        if (!(g < T(1))) return areas_.parallel_point(T(1));
         const detail::ParallelAreaModel<T> model{&areas_, half_};
-        const auto r = detail::invert_area(model, g * half_, T(0), t_max_,
+        const auto r = detail::invert_area(model, g * half_, T(0), T(1),
                                            guess_half(g),
                                            detail::area_tolerance<T>() * half_);
         iterations = r.iterations;
@@ -152,17 +158,16 @@ private:
     }
 
     /// The first guess of solve_half for the edge fraction g in [0, 1] (the shape-blended
-    /// slice, detail parallel_guess; one sin/cos, t = sin e/(1 + cos e)).
+    /// slice, detail parallel_guess).
     APSE_FUNC detail::ParallelPoint<T> guess_half(T g) const noexcept {
-        const T e = detail::parallel_guess(detail::clamp(g, T(0), T(1)), beta_, blend_);
-        const T se = std::sin(e), ce = std::cos(e);
-        return areas_.parallel_point(detail::min_of(se / (T(1) + ce), t_max_), se, ce);
+        return areas_.parallel_point(detail::parallel_guess(detail::clamp(g, T(0), T(1)), beta_, blend_, pade_));
     }
 
     /// Half-area I(psi) between the slices 0 and psi in [0, beta] (docs/math.md §5 I(psi),
     /// cancellation-free; for tests, through detail::MapAccess). Omega_p(psi) = Omega/2 ± I(|psi|).
     APSE_FUNC T half_area(T psi) const noexcept {
-        return areas_.parallel_half_area(areas_.parallel_point(std::tan(T(0.5) * detail::clamp(beta_ - psi, T(0), beta_))));
+        const T e = detail::clamp(beta_ - psi, T(0), beta_);
+        return areas_.parallel_half_area(areas_.parallel_point(detail::min_of(std::tan(T(0.5) * e) / areas_.t_max, T(1))));
     }
 
     /// sample(u), counting the inversion iterations in `iterations` (detail/inversion.hpp).
@@ -177,17 +182,16 @@ private:
         const T x = (T(2) * u2 - T(1)) * p.x_max;
         // 1 − x^2 = (1 − x_max^2) + 4 u2 (1 − u2) x_max^2 with 1 − x_max^2 = (b cos alpha / N)^2: no
         // cancellation where the slice reaches the horizon (x_max ~ 1 in nearly hemispherical ellipses).
-        const T bn = areas_.b_ca / p.n;
-        const T rxy = std::sqrt(bn * bn + T(4) * u2 * (T(1) - u2) * p.x_max * p.x_max);
+        const T rxy = std::sqrt(p.cos_arc * p.cos_arc + T(4) * u2 * (T(1) - u2) * p.x_max * p.x_max);
         const vec3 local(x, fold.side * rxy * p.sin_psi, rxy * p.cos_psi);
         return {ellipse_.to_world(local), inv_omega_};
     }
 
     SphericalEllipse<T> ellipse_;
-    detail::EllipseAreas<T> areas_;
+    detail::ParallelAreas<T> areas_;
     T beta_;  ///< the minor semi-arc (one atan, at set-up)
-    T t_max_; ///< tan(beta/2) = sin beta / (1 + cos beta): the end of the bracket in t
     T omega_, inv_omega_, half_, blend_;
+    T pade_;  ///< (15 − 6 h^2)/(15 − h^2), h = beta/2: parallel_guess's 1/tan(beta/2), times h
     bool valid_;
 };
 
