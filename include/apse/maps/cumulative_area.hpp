@@ -32,9 +32,9 @@
 /// P = (a sqrt(S), b cos alpha sin psi, b cos alpha cos psi)/N, so x_max(psi) = a sqrt(S)/N and
 /// C = b cos alpha cos psi / N. Every term is non-negative: no cancellation, also where the
 /// Legendre/Carlson form of docs/math.md §5 loses digits (nearly hemispherical ellipses). The parallel
-/// map solves for t = tan(e/2), e = beta − psi the distance to the end of the minor axis, so
-/// sin(beta − psi) is exact near the end where the slice shrinks to a point, and sin e, cos e are
-/// rational in t (no trigonometric call per iteration).
+/// map solves for t = tan(e/2)/tan(beta/2), e = beta − psi the distance to the end of the minor
+/// axis, so sin(beta − psi) is exact near the end where the slice shrinks to a point, and sin e,
+/// cos e are rational in t (no trigonometric call per iteration).
 
 #include <cmath>
 

@@ -50,10 +50,10 @@ template <class T> APSE_FUNC T parallel_guess(T g, T beta, T w, T pade) noexcept
 /// Parallel area-preserving map of the unit square onto a spherical ellipse (docs/math.md §5).
 ///
 /// Construction precomputes the solid angle (one R_J). Each sample folds u1 onto one half of the
-/// ellipse, solves the cumulative-area equation for t = tan(e/2), e = beta − psi the distance of the
-/// slice from the end of the minor axis (cancellation-free sector + triangle form,
-/// maps/cumulative_area.hpp; sin e and cos e rational in t) by bracketed Halley/Newton with the
-/// exact density 4 x_max/(1 + t^2), from a shape-blended first guess,
+/// ellipse, solves the cumulative-area equation for the slice position t = tan(e/2)/tan(beta/2)
+/// in [0, 1], e = beta − psi the distance of the slice from the end of the minor axis
+/// (cancellation-free sector + triangle form, maps/cumulative_area.hpp; sin e and cos e rational
+/// in t) by bracketed Halley/Newton with the exact density, from a shape-blended first guess,
 /// one closed-form evaluation and cheap Hermite increments after it (detail/inversion.hpp);
 /// relative stopping rule 4 eps of Omega/2. Accuracy (measured, docs/maps.md): cumulative-area
 /// error <= 1e-14 (double) / 1e-6 (float) relative to Omega/2. Trivially copyable.
