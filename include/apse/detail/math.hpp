@@ -94,10 +94,10 @@ template <class T> APSE_FUNC bool is_finite(T x) noexcept {
 /// x * x.
 template <class T> APSE_FUNC constexpr T sqr(T x) noexcept { return x * x; }
 
-/// x^(1/3) for x in [2^-100, 2^100] (not checked), relative error 2.1e-5 in float and
-/// 6.1e-15 in double (measured): the exponent divided by 3 on the bits (the initial estimate of fdlibm's cbrt,
-/// within 3.2e-2), then Halley steps y (y^3 + 2x)/(2y^3 + x), each cubing the error (one in
-/// float, two in double). For first guesses: no library call, no range reduction.
+/// x^(1/3) for x in [2^-100, 2^100] (not checked), relative error 2.1e-5 in float and 6.1e-15
+/// in double (measured): the exponent divided by 3 on the bits (the initial estimate of fdlibm's
+/// cbrt, within 3.2e-2), then Halley steps y (y^3 + 2x)/(2y^3 + x), each cubing the error (one
+/// in float, two in double). For first guesses: no library call, no range reduction.
 template <class T> APSE_FUNC T cube_root_approx(T x) noexcept {
     static_assert(is_real_type<T>(), "apse: T must be float or double");
     T y;

@@ -219,7 +219,7 @@ template <class T> struct ParallelAreas : EllipseAreas<T> {
     /// boundary point plus the geodesic triangle, doubled. Relative accuracy a few eps.
     APSE_NOINLINE APSE_FUNC T parallel_half_area(const ParallelPoint<T>& p) const noexcept {
         const T sector = radial_area(p.ct, p.st, p.c_max);
-        // (both atan2 arguments divided by N, so that tiny ellipses do not underflow)
+        // (both atan2 arguments divided by N: x_max sin psi and O(1) terms, no underflow for tiny ellipses)
         const T triangle = T(2) * std::atan2(p.x_max * p.sin_psi, (T(1) + p.c_max + p.cos_psi) + p.cos_arc);
         return T(2) * (sector + triangle);
     }
