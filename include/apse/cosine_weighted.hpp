@@ -17,6 +17,7 @@
 /// (the plain map).
 
 #include <cmath>
+#include <type_traits>
 
 #include "config.hpp"
 #include "math.hpp"
@@ -26,6 +27,7 @@
 #include "detail/concentric.hpp"
 #include "detail/glm.hpp"
 #include "detail/quadrant.hpp"
+#include "detail/tabulated_cosine.hpp"
 #include "detail/vector.hpp"
 #include "maps/ld_radial.hpp"
 #include "maps/parallel.hpp"
@@ -44,6 +46,7 @@ template <class Map> struct CosineTraits;
 template <class BaseMap> struct PlainCosineTraits {
     using Base = BaseMap;
     static constexpr bool ld = false;
+    static constexpr bool tabulated = false;
     static APSE_FUNC const Base& base(const Base& m) noexcept { return m; }
 };
 template <class T> struct CosineTraits<RadialMap<T>> : PlainCosineTraits<RadialMap<T>> {
@@ -54,6 +57,7 @@ template <class T> struct CosineTraits<LdRadialMap<T>> : CosineTraits<RadialMap<
     static APSE_FUNC const RadialMap<T>& base(const LdRadialMap<T>& m) noexcept { return m.radial(); }
 };
 template <class T> struct CosineTraits<TabulatedMap<T>> : PlainCosineTraits<TabulatedMap<T>> {
+    static constexpr bool tabulated = true;
     static APSE_FUNC bool valid(const TabulatedMap<T>& b) noexcept { return !b.empty(); }
 };
 template <class T> struct CosineTraits<TabulatedLdRadialMap<T>> : CosineTraits<TabulatedMap<T>> {
@@ -63,6 +67,9 @@ template <class T> struct CosineTraits<TabulatedLdRadialMap<T>> : CosineTraits<T
 template <class T> struct CosineTraits<ParallelMap<T>> : PlainCosineTraits<ParallelMap<T>> {
     static APSE_FUNC bool valid(const ParallelMap<T>& b) noexcept { return b.solid_angle() > T(0); }
 };
+
+/// The member CosineWeighted holds in place of TabulatedCosineWarp for the exact maps.
+struct NoCosineWarp {};
 
 }  // namespace detail
 
@@ -106,8 +113,16 @@ public:
             mode_ = Mode::plain;
             return;
         }
-        psa_ = ProjectedSolidAngleSampler<T, Nodes>(base_.ellipse(), normal);
-        if (!psa_.empty()) mode_ = Mode::weighted;
+        if constexpr (Traits::tabulated) {
+            const vec3 nl = base_.ellipse().to_local(normal * (T(1) / scale));
+            if (nl.z > T(1e-3) * detail::max_abs3(nl)) {
+                w_.warp = Warp(base_, nl);
+                mode_ = Mode::warped;
+                return;
+            }
+        }
+        w_.psa = ProjectedSolidAngleSampler<T, Nodes>(base_.ellipse(), normal);
+        if (!w_.psa.empty()) mode_ = Mode::weighted;
     }
 
     /// True if the sampler cannot sample (empty map or light entirely below the horizon): every
@@ -115,7 +130,7 @@ public:
     APSE_FUNC bool empty() const noexcept { return mode_ == Mode::empty; }
 
     /// True if the samples are cosine-weighted (false for an empty sampler or a zero/NaN normal).
-    APSE_FUNC bool weighted() const noexcept { return mode_ == Mode::weighted; }
+    APSE_FUNC bool weighted() const noexcept { return mode_ == Mode::weighted || mode_ == Mode::warped; }
 
     /// The ellipse sampled.
     APSE_FUNC const SphericalEllipse<T>& ellipse() const noexcept { return base_.ellipse(); }
@@ -139,10 +154,16 @@ public:
         if (!ok) return {base_.ellipse().z, T(0)};
         vec2 v = uc;
         if (Traits::ld) {
-            const detail::ConcentricPolar<T> d = detail::concentric_to_disk(uc);
-            v = vec2(d.turns, d.radius * d.radius);
+            // the concentric map's (turns, radius^2), without branches: the quadrant of its point
+            // from the signs, the fraction of the quarter turn unfolded as fold_quadrant's inverse
+            const detail::ConcentricFold<T> d = detail::concentric_fold(uc);
+            const T base = d.fold.sign_y > T(0) ? T(1) - d.fold.sign_x : T(3) + d.fold.sign_x;
+            v = vec2(T(0.25) * (base + d.fold.sign_x * d.fold.sign_y * d.fold.fraction), d.radius2);
         }
-        return psa_.sample(v);
+        if constexpr (Traits::tabulated) {
+            if (mode_ == Mode::warped) return w_.warp.sample(base_, v.x, v.y);
+        }
+        return w_.psa.sample(v);
     }
 
     /// Density of sample() at the world-space direction `d` (any non-zero length), in solid
@@ -150,7 +171,13 @@ public:
     /// zero/NaN direction. Equals the pdf sample() reports.
     APSE_FUNC T pdf(const vec3& d) const noexcept {
         if (mode_ == Mode::empty) return T(0);
-        if (mode_ == Mode::weighted) return psa_.pdf(d);
+        if (mode_ == Mode::weighted) return w_.psa.pdf(d);
+        if constexpr (Traits::tabulated) {
+            if (mode_ == Mode::warped) {
+                vec3 l;
+                return local(d, l) && base_.ellipse().contains(d) ? w_.warp.pdf(base_, l) : T(0);
+            }
+        }
         const T p = base_.pdf(d);
         return p > T(0) ? p : T(0);
     }
@@ -160,16 +187,40 @@ public:
     /// Zero/NaN direction or empty(): (0, 0).
     APSE_FUNC vec2 invert(const vec3& d) const noexcept {
         if (mode_ == Mode::empty) return vec2(T(0));
-        const vec2 v = mode_ == Mode::weighted ? psa_.invert(d) : base_.invert(d);
+        vec2 v;
+        if constexpr (Traits::tabulated) {
+            if (mode_ == Mode::warped) {
+                vec3 l;
+                if (!local(d, l)) return vec2(T(0));
+                v = w_.warp.invert(base_, l);
+            }
+        }
+        if (mode_ != Mode::warped) v = mode_ == Mode::weighted ? w_.psa.invert(d) : base_.invert(d);
         if (Traits::ld) return detail::concentric_from_disk(std::sqrt(detail::clamp(v.y, T(0), T(1))), v.x);
         return v;
     }
 
 private:
-    enum class Mode : int { empty, plain, weighted };
+    /// The unit local direction l of the world-space direction d; false if d is zero, NaN or
+    /// infinite.
+    APSE_FUNC bool local(const vec3& d, vec3& l) const noexcept {
+        bool ok = true;
+        l = detail::normalize_direction(base_.ellipse().to_local(d), ok);
+        return ok;
+    }
+
+    enum class Mode : int { empty, plain, weighted, warped };
+    using Warp = std::conditional_t<Traits::tabulated, detail::TabulatedCosineWarp<T, Nodes>, detail::NoCosineWarp>;
     Mode mode_;
     Base base_;
-    ProjectedSolidAngleSampler<T, Nodes> psa_;
+    /// The weighting in use (mode_): none, the exact sampler or the warp. A union: building a
+    /// CosineWeighted writes only the member it uses.
+    union Weighting {
+        APSE_FUNC Weighting() noexcept : none() {}
+        detail::NoCosineWarp none;
+        ProjectedSolidAngleSampler<T, Nodes> psa;
+        Warp warp;
+    } w_;
 };
 
 #if defined(__GNUC__) && !defined(__clang__) && !defined(__CUDACC__)

@@ -29,6 +29,28 @@ struct MapAccess {
         return map.sample_folded(fold, u2, iterations);
     }
 
+    /// TabulatedMap's pieces of one sample, for the cosine-weighted warp over it
+    /// (detail/tabulated_cosine.hpp): the ray of a folded u1 (table walk included), the ray at a
+    /// Lambert anomaly, the sample along a ray, the quadrant fraction of a Lambert anomaly and a
+    /// local direction's coordinates, azimuth and density.
+    template <class Map, class Fold>
+    static APSE_FUNC auto ray_folded(const Map& map, const Fold& fold, int& steps) noexcept {
+        return map.ray_folded(fold, steps);
+    }
+    template <class Map, class Fold, class T>
+    static APSE_FUNC auto ray_at(const Map& map, const Fold& fold, T x, T df) noexcept {
+        return map.ray_at(fold, x, df);
+    }
+    template <class Map, class Ray, class T>
+    static APSE_FUNC auto ray_sample(const Map& map, const Ray& ray, T u2) noexcept {
+        return map.ray_sample(ray, u2);
+    }
+    template <class Map, class T> static APSE_FUNC T lambda_fraction(const Map& map, T x) noexcept {
+        return map.lambda_fraction(x);
+    }
+    template <class Map, class V> static APSE_FUNC auto local_point(const Map& map, const V& l) noexcept {
+        return map.local_point(l);
+    }
     /// map.solve_quadrant(f, iterations): RadialMap's boundary state at the fraction f of the
     /// quadrant's area, with the inversion iterations.
     template <class Map, class T>

@@ -161,10 +161,38 @@ private:
     friend struct detail::DiagnosticsAccess;
     friend struct detail::MapAccess;
 
-    /// The world-space sample for the quadrant and quadrant-area fraction `fold` and the radial
-    /// fraction u2 in [0, 1] (not checked; the map is valid), with the table-walk steps in
-    /// `steps`: sample() after fold_quadrant(u1), TabulatedLdRadialMap's after the concentric map.
-    APSE_HOT_INLINE DirectionSample<T> sample_folded(const detail::QuadrantFold<T>& fold, T u2, int& steps) const noexcept {
+    /// One azimuth of a sample (the quadrant, the Lambert point (px, py) = (cos lambda,
+    /// kappa sin lambda), its length n, n C, g = 1/(n^2 (1 + C)), C = cos theta_max there) and
+    /// the density's two factors (the bin's blended mass df and n^2 (1 + C)).
+    struct Ray {
+        detail::QuadrantFold<T> fold;
+        T px, py, n, nc, g, c;
+        T df, n2_1pc;
+    };
+
+    /// The ray at the Lambert anomaly lambda = x pi/2 (x in [0, 1]) of the quadrant `fold`, in a
+    /// bin of blended mass df.
+    APSE_HOT_INLINE Ray ray_at(const detail::QuadrantFold<T>& fold, T x, T df) const noexcept {
+        const detail::SinCosValues<T> sc = detail::sin_cos_quarter_turn(x);
+        // n = |(px, py)| and n C(tau) = sqrt(cos^2 alpha px^2 + cos^2 beta py^2): one paired square
+        // root; then one division, g = 1/(n (n + n C)) = 1/(n^2 (1 + C)), gives C and everything
+        // radial_direction needs; the density needs only n^2 (1 + C) (no division)
+        Ray r;
+        r.fold = fold;
+        r.px = sc.c;
+        r.py = kappa_ * sc.s;
+        const T px2 = r.px * r.px, py2 = r.py * r.py;
+        detail::sqrt2(px2 + py2, axes_.ca2 * px2 + axes_.cb2 * py2, r.n, r.nc);
+        r.n2_1pc = r.n * (r.n + r.nc);
+        r.g = T(1) / r.n2_1pc;
+        r.c = r.nc * ((r.n + r.nc) * r.g);  // C = nc / n
+        r.df = df;
+        return r;
+    }
+
+    /// The ray of the quadrant and quadrant-area fraction `fold` (not checked; the map is valid),
+    /// with the table-walk steps in `steps`.
+    APSE_HOT_INLINE Ray ray_folded(const detail::QuadrantFold<T>& fold, int& steps) const noexcept {
         const T f = fold.fraction * T(bins_);  // the blended CDF runs from 0 to N
         // the bin k with F(k) <= f < F(k + 1) (F(0) = 0, F(N) = N up to rounding; f >= F(N) gives
         // the last bin): the blended CDF is within a few % of linear in lambda, so start at the
@@ -190,23 +218,41 @@ private:
         const T s = df > T(0) ? detail::clamp_non_nan((f - f0) / df, T(0), T(1)) : T(0);
         // lambda = (lo + s) pi/(2N); tan tau = kappa tan lambda;
         // (cos tau, sin tau) = (cos lambda, kappa sin lambda)/n
-        const detail::SinCosValues<T> sc = detail::sin_cos_quarter_turn(detail::min_of((T(lo) + s) * inv_bins_, T(1)));
-        // n = |(px, py)| and n C(tau) = sqrt(cos^2 alpha px^2 + cos^2 beta py^2): one paired square
-        // root; then one division, g = 1/(n (n + n C)) = 1/(n^2 (1 + C)), gives C and everything
-        // radial_direction needs; the density needs only n^2 (1 + C) (no division)
-        const T px = sc.c, py = kappa_ * sc.s, px2 = px * px, py2 = py * py;
-        T n, nc;
-        detail::sqrt2(px2 + py2, axes_.ca2 * px2 + axes_.cb2 * py2, n, nc);
-        const T n2_1pc = n * (n + nc);
-        const T g = T(1) / n2_1pc;
-        const T c = nc * ((n + nc) * g);  // C = nc / n
-        return {ellipse_.to_world(detail::radial_direction(axes_, fold, px, py, c, g, u2)),  // as RadialMap
-                density(df, n2_1pc)};
+        return ray_at(fold, detail::min_of((T(lo) + s) * inv_bins_, T(1)), df);
     }
 
-    /// (u1, u2) of the unit local direction `l` (clamped to [0, 1]^2): invert() and
-    /// TabulatedLdRadialMap's inverse (maps/ld_radial.hpp, through detail::MapAccess).
-    APSE_FUNC vec2 local_coordinates(const vec3& l) const noexcept {
+    /// The world-space sample at the radial fraction u2 in [0, 1] of the ray r, with its density.
+    APSE_HOT_INLINE DirectionSample<T> ray_sample(const Ray& r, T u2) const noexcept {
+        return {ellipse_.to_world(detail::radial_direction(axes_, r.fold, r.px, r.py, r.c, r.g, u2)),  // as RadialMap
+                density(r.df, r.n2_1pc)};
+    }
+
+    /// The world-space sample for the quadrant and quadrant-area fraction `fold` and the radial
+    /// fraction u2 in [0, 1] (not checked; the map is valid), with the table-walk steps in
+    /// `steps`: sample() after fold_quadrant(u1), TabulatedLdRadialMap's after the concentric map.
+    APSE_HOT_INLINE DirectionSample<T> sample_folded(const detail::QuadrantFold<T>& fold, T u2, int& steps) const noexcept {
+        return ray_sample(ray_folded(fold, steps), u2);
+    }
+
+    /// The quadrant-area fraction of the Lambert anomaly lambda = x pi/2 (x in [0, 1]): the
+    /// blended CDF, linear within a bin.
+    APSE_FUNC T lambda_fraction(T x) const noexcept {
+        const T y = detail::clamp(x, T(0), T(1)) * T(bins_);
+        int k = int(y);
+        if (k > bins_ - 1) k = bins_ - 1;
+        const T f0 = cdf_at(k), f1 = cdf_at(k + 1);
+        return detail::clamp((f0 + (y - T(k)) * (f1 - f0)) * inv_bins_, T(0), T(1));
+    }
+
+    /// A local direction in the map's coordinates: (u1, u2), its azimuth's first-quadrant
+    /// (cos tau, sin tau), C = cos theta_max there, and the map's density there.
+    struct LocalPoint {
+        vec2 u;
+        T ct, st, c, pdf;
+    };
+
+    /// The LocalPoint of the unit local direction `l` ((u1, u2) clamped to [0, 1]^2).
+    APSE_FUNC LocalPoint local_point(const vec3& l) const noexcept {
         const int q = detail::quadrant_of(l.x, l.y);
         const T x = std::fabs(l.x), y = std::fabs(l.y);
         const Azimuth az = azimuth_of(x, y);
@@ -214,14 +260,19 @@ private:
         const T s = detail::clamp(az.lambda / bin_width_ - T(az.bin), T(0), T(1));
         const T f = detail::clamp((f0 + s * (f1 - f0)) * inv_bins_, T(0), T(1));
         const T u1 = detail::unfold_quadrant_fraction(q, f);
+        const T c = axes_.c_max(az.ct, az.st);
         T u2 = T(1);
         if (l.z > T(0)) {
-            const T c = axes_.c_max(az.ct, az.st);
             const detail::RadialFraction<T> r = detail::radial_fraction(axes_, x, y, l.z, az.ct, az.st, c);
             u2 = r.one_minus_c > T(0) ? detail::clamp(r.one_minus_cos / r.one_minus_c, T(0), T(1)) : T(0);
         }
-        return vec2(detail::clamp(u1, T(0), T(1)), u2);
+        const T w = (T(1) + c) * kappa2_ / (kappa2_ * az.ct * az.ct + az.st * az.st);
+        return {vec2(detail::clamp(u1, T(0), T(1)), u2), az.ct, az.st, c, density(f1 - f0, w)};
     }
+
+    /// (u1, u2) of the unit local direction `l` (clamped to [0, 1]^2): invert() and
+    /// TabulatedLdRadialMap's inverse (maps/ld_radial.hpp, through detail::MapAccess).
+    APSE_FUNC vec2 local_coordinates(const vec3& l) const noexcept { return local_point(l).u; }
 
     /// sample(u), counting the table-walk steps in `iterations` (0 when the uniform guess was the
     /// bin).
