@@ -116,7 +116,7 @@ public:
         if constexpr (Traits::tabulated) {
             const vec3 nl = base_.ellipse().to_local(normal * (T(1) / scale));
             if (nl.z > T(1e-3) * detail::max_abs3(nl)) {
-                w_.warp = Warp(base_, nl);
+                w_.warp.build(base_, nl);
                 mode_ = Mode::warped;
                 return;
             }
@@ -152,16 +152,22 @@ public:
         bool ok = true;
         const vec2 uc = detail::clamp_unit(u, ok);
         if (!ok) return {base_.ellipse().z, T(0)};
+        if constexpr (Traits::tabulated) {
+            if (mode_ == Mode::warped) {
+                if constexpr (!Traits::ld) return w_.warp.sample(base_, uc.x, uc.y, std::sqrt(uc.y));
+                // the concentric map's (turns, radius), without branches: the quadrant of its
+                // point from the signs, the fraction of the quarter turn unfolded (fold_quadrant)
+                const detail::ConcentricFold<T> d = detail::concentric_fold(uc);
+                const T base = d.fold.sign_y > T(0) ? T(1) - d.fold.sign_x : T(3) + d.fold.sign_x;
+                const T turns = T(0.25) * (base + d.fold.sign_x * d.fold.sign_y * d.fold.fraction);
+                const T radius = detail::max_of(std::fabs(T(2) * uc.x - T(1)), std::fabs(T(2) * uc.y - T(1)));
+                return w_.warp.sample(base_, turns, d.radius2, radius);
+            }
+        }
         vec2 v = uc;
         if (Traits::ld) {
-            // the concentric map's (turns, radius^2), without branches: the quadrant of its point
-            // from the signs, the fraction of the quarter turn unfolded as fold_quadrant's inverse
-            const detail::ConcentricFold<T> d = detail::concentric_fold(uc);
-            const T base = d.fold.sign_y > T(0) ? T(1) - d.fold.sign_x : T(3) + d.fold.sign_x;
-            v = vec2(T(0.25) * (base + d.fold.sign_x * d.fold.sign_y * d.fold.fraction), d.radius2);
-        }
-        if constexpr (Traits::tabulated) {
-            if (mode_ == Mode::warped) return w_.warp.sample(base_, v.x, v.y);
+            const detail::ConcentricPolar<T> d = detail::concentric_to_disk(uc);
+            v = vec2(d.turns, d.radius * d.radius);
         }
         return w_.psa.sample(v);
     }

@@ -42,94 +42,90 @@
 namespace apse {
 namespace detail {
 
-/// The cosine model along one ray (file comment), in y = r − lo on [0, end]: its value c~ and its
-/// mass G(y) = ∫ 2 r c~ dr from lo = y^2 (g2 + y (g3 + g4 y)), every coefficient free of
-/// cancellation where it matters.
+/// The cosine model along one ray whose centre is above the horizon (file comment), as a function
+/// of r = sqrt(u2) on [0, end]: its value c~ and its mass G(r) = ∫ 2 r c~ dr from 0
+/// = r^2 (g2 + r (g3 + g4 r)).
 template <class T> struct CosineRay {
-    enum Kind : int { below, whole, to_horizon, from_horizon };
-    Kind kind;
-    T nz, b, h;    ///< whole: c~ = nz (1 − h y^2) + b y
-    T beta, rh;    ///< to_horizon: c~ = beta (rh − y)(1 + h rh y); from_horizon: beta y (p + q y)
-    T p, q;        ///< from_horizon: 1 + h rh^2, h rh
-    T lo, end;     ///< the range of r above the horizon: [lo, lo + end]
+    T nz, b, h;    ///< the whole ray above the horizon: c~ = nz (1 − h r^2) + b r
+    T beta, rh;    ///< cut at r_h: c~ = beta (rh − r)(1 + h rh r) (0 < rh <= 1)
+    bool cut;      ///< whether the horizon cuts the ray
+    T end;         ///< 1 or rh
     T g2, g3, g4;  ///< G's coefficients
-    T mass;        ///< G(end) = ∫ c~ du2 over the ray
+    T mass;        ///< G(end) = ∫ c~ du2 over the part of the ray above the horizon
 
-    /// c~ at y (>= 0 inside [0, end]).
-    APSE_FUNC T value(T y) const noexcept {
-        if (kind == whole) return nz + y * (b - nz * h * y);
-        if (kind == to_horizon) return beta * (rh - y) * (T(1) + h * rh * y);
-        return beta * y * (p + q * y);
+    /// c~ at r in [0, end] (> 0 there but at a cut ray's end).
+    APSE_FUNC T value(T r) const noexcept {
+        return cut ? beta * (rh - r) * (T(1) + h * rh * r) : nz + r * (b - nz * h * r);
     }
 
-    /// G(y).
-    APSE_FUNC T cdf(T y) const noexcept { return y * y * (g2 + y * (g3 + g4 * y)); }
+    /// G(r).
+    APSE_FUNC T cdf(T r) const noexcept { return r * r * (g2 + r * (g3 + g4 * r)); }
+
+    /// dG/dr and d2G/dr2 at r.
+    APSE_FUNC T cdf_slope(T r) const noexcept { return r * (T(2) * g2 + r * (T(3) * g3 + T(4) * g4 * r)); }
+    APSE_FUNC T cdf_curvature(T r) const noexcept { return T(2) * g2 + r * (T(6) * g3 + T(12) * g4 * r); }
 };
 
-/// The model of the ray whose cosine is nz (1 − h u2) + s sin theta, with b = s sin theta_max,
-/// h = 1 − C and ipc = 1/(1 + C) (C = cos theta_max >= 0): the horizon's crossing, if any, from
-/// tan theta_h = −nz/s, as r_h^2 = (1 − cos theta_h)/h = nz^2 / (K (K + |b|) ipc)... written as
-/// r_h = |nz| / beta with beta = sqrt(K (K + |b|) ipc), K = sqrt(nz^2 sin^2 theta_max + b^2).
+/// The model of the ray whose cosine is nz (1 − h u2) + s sin theta (nz > 0), with b = s sin theta_max,
+/// h = 1 − C and ipc = 1/(1 + C) (C = cos theta_max >= 0). The horizon cuts the ray where the
+/// cosine at the rim, nz C + b, is negative, at tan theta_h = nz/(−s):
+/// r_h^2 = (1 − cos theta_h)/h = nz^2 / (K (K + |b|) ipc), K = sqrt(nz^2 sin^2 theta_max + b^2),
+/// written r_h = nz / beta with beta = sqrt(K (K + |b|) ipc) (no cancellation).
 template <class T> APSE_HOT_INLINE CosineRay<T> cosine_ray(T nz, T b, T h, T c, T ipc) noexcept {
-    CosineRay<T> r{};
+    CosineRay<T> r;
     r.nz = nz;
     r.b = b;
     r.h = h;
-    const T rim = nz * c + b;  // the cosine at the rim
-    if (nz > T(0) && rim >= T(0)) {
-        r.kind = CosineRay<T>::whole;
-        r.end = T(1);
-        r.g2 = nz;
-        r.g3 = T(2.0 / 3.0) * b;
-        r.g4 = T(-0.5) * nz * h;
-    } else if (nz > T(0) || rim > T(0)) {
+    r.g2 = nz;
+    r.g4 = T(-0.5) * nz * h;
+    r.cut = nz * c + b < T(0);
+    if (r.cut) {
         const T k = std::sqrt(nz * nz * (h * (T(1) + c)) + b * b);
-        r.beta = std::sqrt(k * (k + std::fabs(b)) * ipc);
-        r.rh = clamp(std::fabs(nz) / r.beta, T(0), T(1));
-        if (nz > T(0)) {
-            r.kind = CosineRay<T>::to_horizon;
-            r.end = r.rh;
-            r.g2 = nz;
-            r.g3 = T(2.0 / 3.0) * (nz * h * r.rh - r.beta);
-            r.g4 = T(-0.5) * nz * h;
-        } else {
-            r.kind = CosineRay<T>::from_horizon;
-            r.lo = r.rh;
-            r.end = T(1) - r.rh;
-            r.p = T(1) + h * r.rh * r.rh;
-            r.q = h * r.rh;
-            r.g2 = r.beta * r.rh * r.p;
-            r.g3 = T(2.0 / 3.0) * r.beta * (r.p + r.rh * r.q);
-            r.g4 = T(0.5) * r.beta * r.q;
-        }
+        r.beta = std::sqrt(k * (k - b) * ipc);  // b < 0
+        r.rh = min_of(nz / r.beta, T(1));
+        r.end = r.rh;
+        r.g3 = T(2.0 / 3.0) * (nz * h * r.rh - r.beta);
     } else {
-        r.kind = CosineRay<T>::below;
-        return r;
+        r.beta = T(0);
+        r.rh = T(1);
+        r.end = T(1);
+        r.g3 = T(2.0 / 3.0) * b;
     }
     r.mass = r.cdf(r.end);
     return r;
 }
 
-/// The y in [0, ray.end] with G(y) = u mass (u in [0, 1]): Halley's steps with one division,
-/// safeguarded by the bracket, from end sqrt(u) (exact when G ∝ y^2); measured over the
-/// benchmark's lights: 2.2 steps per sample in double.
-template <class T> APSE_HOT_INLINE T cosine_ray_root(const CosineRay<T>& ray, T u) noexcept {
+/// One of Halley's steps towards G(r) = target, with one division (Newton's where Halley's
+/// denominator is not positive), kept inside [0, end].
+template <class T> APSE_HOT_INLINE T cosine_ray_step(const CosineRay<T>& ray, T r, T f) noexcept {
+    const T d1 = ray.cdf_slope(r), d2 = ray.cdf_curvature(r);
+    const T den = T(2) * d1 * d1 - f * d2;
+    const T next = den > T(0) ? r - T(2) * f * d1 / den : r - f / d1;
+    return clamp_non_nan(next, T(0), ray.end);
+}
+
+/// The r in [0, ray.end] with G(r) = u mass (u in [0, 1]; root_u = sqrt(u)): two of Halley's
+/// steps from end sqrt(u) (exact when G ∝ r^2), which nearly always land within the tolerance
+/// (measured over the benchmark's lights: 2.2 steps per sample in double, 1.x in float), then
+/// more steps safeguarded by the bracket until they do.
+template <class T> APSE_HOT_INLINE T cosine_ray_root(const CosineRay<T>& ray, T u, T root_u) noexcept {
     const T target = u * ray.mass, tolerance = T(2) * epsilon<T>() * ray.mass;
+    T r = ray.end * root_u;
+    r = cosine_ray_step(ray, r, ray.cdf(r) - target);
+    r = cosine_ray_step(ray, r, ray.cdf(r) - target);
+    T f = ray.cdf(r) - target;
+    if (!(std::fabs(f) > tolerance)) return r;
     T lo = T(0), hi = ray.end;
-    T y = ray.end * std::sqrt(u);
-    for (int i = 0; i < 16; ++i) {
-        const T f = ray.cdf(y) - target;
-        if (!(std::fabs(f) > tolerance)) break;
-        if (f < T(0)) lo = y;
-        else hi = y;
-        const T d1 = y * (T(2) * ray.g2 + y * (T(3) * ray.g3 + T(4) * ray.g4 * y));
-        const T d2 = T(2) * ray.g2 + y * (T(6) * ray.g3 + T(12) * ray.g4 * y);
-        const T den = T(2) * d1 * d1 - f * d2;
-        const T next = den > T(0) ? y - T(2) * f * d1 / den : y - f / d1;
-        if (next == y || !(hi - lo > T(4) * epsilon<T>() * hi)) break;
-        y = (next > lo && next < hi) ? next : T(0.5) * (lo + hi);
+    for (int i = 0; i < 32; ++i) {
+        if (f < T(0)) lo = r;
+        else hi = r;
+        const T next = cosine_ray_step(ray, r, f);
+        const T mid = T(0.5) * (lo + hi);
+        r = (next > lo && next < hi) ? next : mid;
+        f = ray.cdf(r) - target;
+        if (!(std::fabs(f) > tolerance) || !(hi - lo > T(4) * epsilon<T>() * hi)) break;
     }
-    return y;
+    return r;
 }
 
 /// The cosine-weighted warp of a TabulatedMap's square (file comment). Built for one map and one
@@ -142,10 +138,11 @@ public:
     using vec2 = glm::vec<2, T>;
     using vec3 = glm::vec<3, T>;
 
-    TabulatedCosineWarp() = default;
-
-    /// The warp of `map` (valid) for the local normal `nl` (finite, n_z > 0).
-    template <class Map> APSE_FUNC TabulatedCosineWarp(const Map& map, const vec3& nl) noexcept : n_(nl) {
+    /// Builds, in place, the warp of `map` (valid) for the local normal `nl` (finite, n_z > 0).
+    /// (A member function rather than a constructor: CosineWeighted builds the warp inside its
+    /// union, where a constructed temporary would be copied.)
+    template <class Map> APSE_FUNC void build(const Map& map, const vec3& nl) noexcept {
+        n_ = nl;
         const SphericalEllipse<T>& e = map.ellipse();
         a_ = e.sin_alpha;
         b_ = e.sin_beta;
@@ -174,6 +171,12 @@ public:
             ipc[j] = ray.n * ray.n * ray.g;
             h[j] = (ax[j] * ax[j] + by[j] * by[j]) * ipc[j];
             frac[j] = MapAccess::lambda_fraction(map, T(j) / T(m));
+        }
+        // the intervals' widths in the first quadrant (the others mirror them), and their inverses
+        T w[m], iw[m];
+        for (int j = 0; j < m; ++j) {
+            w[j] = T(0.25) * (frac[j + 1] - frac[j]);
+            iw[j] = w[j] > T(0) ? T(1) / w[j] : T(0);
         }
         // the nodes over the turn: the first quadrant's ray j reflected by the signs of (x, y) =
         // (+, +), (−, +), (−, −), (+, −) in the quadrants 0 to 3, the odd ones in reverse order
@@ -204,34 +207,36 @@ public:
         node_[0] += floor;
         cdf_[0] = T(0);
         for (int k = 0; k < Nodes; ++k) {
+            const int i = k % m, j = ((k / m) & 1) ? m - 1 - i : i;  // the interval's first-quadrant twin
             node_[k + 1] += floor;
-            width_[k] = t_[k + 1] - t_[k];
-            cdf_[k + 1] = cdf_[k] + width_[k] * T(0.5) * (node_[k] + node_[k + 1]);
+            slope_[k] = (node_[k + 1] - node_[k]) * iw[j];
+            cdf_[k + 1] = cdf_[k] + w[j] * T(0.5) * (node_[k] + node_[k + 1]);
         }
         inv_total_ = T(1) / cdf_[Nodes];
     }
 
     /// The sample of (turns, u2) in [0, 1]^2 (the warp's input: u1 of TabulatedMap, or the
-    /// concentric map's turns and radius^2).
-    template <class Map> APSE_HOT_INLINE DirectionSample<T> sample(const Map& map, T turns, T u2) const noexcept {
-        // the azimuth: the piecewise-linear marginal's interval, then the root in it
+    /// concentric map's turns and radius^2), root_u2 = sqrt(u2).
+    template <class Map>
+    APSE_HOT_INLINE DirectionSample<T> sample(const Map& map, T turns, T u2, T root_u2) const noexcept {
+        // the azimuth: the piecewise-linear marginal's interval, then the root in it:
+        // d (node_k + slope_k d/2) = target − cdf_k, without cancellation
         const T target = turns * cdf_[Nodes];
-        const int k = count_below(cdf_, target);
-        const T x = width_[k] > T(0) ? (target - cdf_[k]) / width_[k] : T(0);
-        const T frac = linear_density_root(node_[k], node_[k + 1], x);
-        const T m = node_[k] + frac * (node_[k + 1] - node_[k]);
+        const int k = interval_of(cdf_, target);
+        const T x = max_of(target - cdf_[k], T(0));
+        const T den = node_[k] + std::sqrt(max_of(node_[k] * node_[k] + T(2) * slope_[k] * x, T(0)));
+        const T d = den > T(0) ? T(2) * x / den : T(0);
+        const T m = node_[k] + slope_[k] * d;
         int steps = 0;
-        const auto ray = MapAccess::ray_folded(map, fold_quadrant(t_[k] + width_[k] * frac), steps);
+        const auto ray = MapAccess::ray_folded(map, fold_quadrant(t_[k] + d), steps);
         // the cosine along it (ray_at: (a px, b py) (n + nc) g = sin theta_max (cos phi, sin phi))
         const T ax = ray.fold.sign_x * a_ * ray.px, by = ray.fold.sign_y * b_ * ray.py;
-        const T ipc = ray.n * ray.n * ray.g;
         const CosineRay<T> cr = cosine_ray(n_.z, (n_.x * ax + n_.y * by) * ((ray.n + ray.nc) * ray.g),
-                                           (ax * ax + by * by) * ray.g, ray.c, ipc);
-        const T y = cosine_ray_root(cr, u2);
-        const T r = cr.lo + y;
+                                           (ax * ax + by * by) * ray.g, ray.c, ray.n * ray.n * ray.g);
+        const T r = cosine_ray_root(cr, u2, root_u2);
         DirectionSample<T> s = MapAccess::ray_sample(map, ray, r * r);
-        const T v = cr.value(y);
-        const T p = s.pdf * (m * inv_total_) * (v / cr.mass);
+        const T v = cr.value(r);
+        const T p = s.pdf * (m * inv_total_) * v / cr.mass;
         s.pdf = v > T(0) && is_finite(p) ? p : T(0);
         return s;
     }
@@ -239,64 +244,64 @@ public:
     /// The warp's density at the unit local direction l (inside the ellipse: the caller checks),
     /// times the map's: the pdf sample() reports there. 0 below the horizon.
     template <class Map> APSE_FUNC T pdf(const Map& map, const vec3& l) const noexcept {
-        T m, y;
+        T m, r;
         CosineRay<T> cr;
-        const auto lp = locate(map, l, m, y, cr);
-        if (cr.kind == CosineRay<T>::below || !(y >= T(0)) || !(y <= cr.end)) return T(0);
-        const T v = cr.value(y);
-        const T p = lp.pdf * (m * inv_total_) * (v / cr.mass);
+        const auto lp = locate(map, l, m, r, cr);
+        if (!(r <= cr.end)) return T(0);
+        const T v = cr.value(r);
+        const T p = lp.pdf * (m * inv_total_) * v / cr.mass;
         return v > T(0) && is_finite(p) ? p : T(0);
     }
 
     /// The (turns, u2) whose sample is the unit local direction l (clamped formulas outside).
     template <class Map> APSE_FUNC vec2 invert(const Map& map, const vec3& l) const noexcept {
-        T m, y;
+        T m, r;
         CosineRay<T> cr;
-        const auto lp = locate(map, l, m, y, cr);
-        int k;
-        T frac;
-        interval(lp.u.x, k, frac);
-        const T u1 = (cdf_[k] + width_[k] * linear_density_mass(node_[k], node_[k + 1], frac)) * inv_total_;
-        const T u2 = cr.kind == CosineRay<T>::below ? T(0) : cr.cdf(clamp(y, T(0), cr.end)) / cr.mass;
+        const auto lp = locate(map, l, m, r, cr);
+        const int k = interval_of(t_, lp.u.x);
+        const T d = clamp(lp.u.x - t_[k], T(0), t_[k + 1] - t_[k]);
+        const T u1 = (cdf_[k] + d * (node_[k] + T(0.5) * slope_[k] * d)) * inv_total_;
+        const T u2 = cr.cdf(min_of(r, cr.end)) / cr.mass;
         return vec2(clamp(u1, T(0), T(1)), clamp(u2, T(0), T(1)));
     }
 
 private:
-    /// The number of a[1 .. Nodes − 1] at or below x: the interval of x among the nodes
-    /// (counted without branches: x is random).
-    static APSE_HOT_INLINE int count_below(const T (&a)[Nodes + 1], T x) noexcept {
+    /// The k in [0, Nodes − 1] with a[k] <= x < a[k + 1] (a increasing; x below a[1]: 0, at or
+    /// above a[Nodes − 1]: Nodes − 1): a binary search without branches (x is random).
+    static APSE_HOT_INLINE int interval_of(const T (&a)[Nodes + 1], T x) noexcept {
         int k = 0;
-        for (int i = 1; i < Nodes; ++i) k += a[i] <= x ? 1 : 0;
+        for (int i = levels() - 1; i >= 0; --i) {
+            const int next = k + (1 << i);
+            k = (next < Nodes && a[next] <= x) ? next : k;
+        }
         return k;
     }
-
-    /// The node interval k of u1 and the position in it.
-    APSE_FUNC void interval(T u1, int& k, T& frac) const noexcept {
-        k = count_below(t_, u1);
-        frac = width_[k] > T(0) ? clamp((u1 - t_[k]) / width_[k], T(0), T(1)) : T(0);
+    /// The binary search's steps: the least L with 2^L >= Nodes.
+    static constexpr APSE_FUNC int levels() noexcept {
+        int l = 0;
+        while ((1 << l) < Nodes) ++l;
+        return l;
     }
 
-    /// The map's coordinates of l, the marginal m there, the ray's model and y = r − lo.
-    template <class Map> APSE_FUNC auto locate(const Map& map, const vec3& l, T& m, T& y, CosineRay<T>& cr) const noexcept {
+    /// The map's coordinates of l, the marginal m there, the ray's model and r = sqrt(u2).
+    template <class Map> APSE_FUNC auto locate(const Map& map, const vec3& l, T& m, T& r, CosineRay<T>& cr) const noexcept {
         const auto lp = MapAccess::local_point(map, l);
-        int k;
-        T frac;
-        interval(lp.u.x, k, frac);
-        m = node_[k] + frac * (node_[k + 1] - node_[k]);
+        const int k = interval_of(t_, lp.u.x);
+        m = node_[k] + slope_[k] * clamp(lp.u.x - t_[k], T(0), t_[k + 1] - t_[k]);
         const T ax = std::copysign(a_ * lp.ct, l.x), by = std::copysign(b_ * lp.st, l.y);
         const T ipc = T(1) / (T(1) + lp.c);
         cr = cosine_ray(n_.z, n_.x * ax + n_.y * by, (ax * ax + by * by) * ipc, lp.c, ipc);
-        y = std::sqrt(lp.u.y) - cr.lo;
+        r = std::sqrt(lp.u.y);
         return lp;
     }
 
-    vec3 n_{};               ///< the normal in the ellipse's frame (n_z > 0)
-    T a_{}, b_{};            ///< sin alpha, sin beta
-    T t_[Nodes + 1]{};       ///< the nodes' u1
-    T width_[Nodes]{};       ///< the intervals' widths
-    T node_[Nodes + 1]{};    ///< the marginal at the nodes (> 0)
-    T cdf_[Nodes + 1]{};     ///< its integral from 0 to node k
-    T inv_total_{};          ///< 1 / cdf_[Nodes]
+    vec3 n_;               ///< the normal in the ellipse's frame (n_z > 0)
+    T a_, b_;              ///< sin alpha, sin beta
+    T t_[Nodes + 1];       ///< the nodes' u1
+    T node_[Nodes + 1];    ///< the marginal at the nodes (> 0)
+    T slope_[Nodes];       ///< its slope in each interval
+    T cdf_[Nodes + 1];     ///< its integral from 0 to node k
+    T inv_total_;          ///< 1 / cdf_[Nodes]
 };
 
 }  // namespace detail
