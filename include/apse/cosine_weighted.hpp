@@ -27,12 +27,12 @@
 #include "detail/concentric.hpp"
 #include "detail/glm.hpp"
 #include "detail/quadrant.hpp"
-#include "detail/tabulated_cosine.hpp"
 #include "detail/vector.hpp"
 #include "maps/ld_radial.hpp"
 #include "maps/parallel.hpp"
 #include "maps/radial.hpp"
 #include "maps/tabulated.hpp"
+#include "maps/tabulated_cosine.hpp"
 
 namespace apse {
 namespace detail {

@@ -2,7 +2,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
-/// @file detail/tabulated_cosine.hpp
+/// @file maps/tabulated_cosine.hpp
 /// `TabulatedCosineWarp<T, Nodes>`: the cosine-weighted option of the tabulated maps when the
 /// ellipse's centre is above the receiver's horizon (CosineWeighted, docs/cosine_weighted.md).
 /// A warp of TabulatedMap's own square (u1 the azimuth's area fraction, u2 the radial fraction)
@@ -32,12 +32,13 @@
 
 #include "../config.hpp"
 #include "../sample.hpp"
-#include "glm.hpp"
-#include "linear_density.hpp"
-#include "map_access.hpp"
-#include "math.hpp"
-#include "pairs.hpp"
-#include "quadrant.hpp"
+#include "../spherical_ellipse.hpp"
+#include "../detail/glm.hpp"
+#include "../detail/map_access.hpp"
+#include "../detail/math.hpp"
+#include "../detail/pairs.hpp"
+#include "../detail/quadrant.hpp"
+#include "tabulated.hpp"
 
 namespace apse {
 namespace detail {
