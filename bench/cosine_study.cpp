@@ -106,11 +106,13 @@ Result run(const std::vector<Receiver>& rs, const Light& L, int trials, Make mak
     double err = 0.0, below = 0.0, none = 0.0, count = 0.0;
     for (const Receiver& r : rs) {
         const auto s = make(r, L);
+        using T = decltype(s.sample(dvec2(0.0)).pdf);  // double, or float for a float sampler
         for (int t = 0; t < trials; ++t) {
             double sum = 0.0;
             for (int i = 0; i < 16; ++i) {
                 const dvec2 u((i % 4 + U(rng)) / 4.0, (i / 4 + U(rng)) / 4.0);
-                const apse::DirectionSample<double> d = s.sample(u);
+                const auto ds = s.sample(glm::vec<2, T>(u));
+                const apse::DirectionSample<double> d{dvec3(ds.direction), double(ds.pdf)};
                 count += 1.0;
                 if (!(d.pdf > 0.0)) {
                     none += 1.0;
@@ -308,6 +310,9 @@ int main(int argc, char** argv) {
         demo_row(rs, pixels, Lp, trials, "CW<TabulatedLdRadial>, 32 nodes", CosTab<TabulatedLdRadialMap<double>, 32>{});
         return 0;
     }
+    int centre_above = 0;  // the straddling receivers whose horizon leaves the disk's centre above it
+    for (const Receiver& r : strad) centre_above += glm::dot(r.n, Ls.c - r.p) > 0.0 ? 1 : 0;
+    std::printf("straddling receivers with the light's centre above the horizon: %d of %zu\n\n", centre_above, strad.size());
     const Result bp = run(plane, Lp, trials, Plain<LdRadialMap<double>>{});
     const Result bs = run(strad, Ls, trials, Plain<LdRadialMap<double>>{});
     std::printf("| sampler | plane relMSE | plane: plain LD-radial / this | straddling relMSE | straddling: "
@@ -323,9 +328,28 @@ int main(int argc, char** argv) {
     row("CW<LdRadial>, 12 nodes", plane, Lp, strad, Ls, trials, a, b, Cos<LdRadialMap<double>, 12>{});
     row("CW<LdRadial>, 16 nodes", plane, Lp, strad, Ls, trials, a, b, Cos<LdRadialMap<double>, 16>{});
     row("CW<LdRadial>, 32 nodes", plane, Lp, strad, Ls, trials, a, b, Cos<LdRadialMap<double>, 32>{});
+    row("CW<TabulatedLdRadial>, 4 nodes", plane, Lp, strad, Ls, trials, a, b, CosTab<TabulatedLdRadialMap<double>, 4>{});
     row("CW<TabulatedLdRadial>, 8 nodes", plane, Lp, strad, Ls, trials, a, b, CosTab<TabulatedLdRadialMap<double>, 8>{});
+    row("CW<TabulatedLdRadial>, 8 nodes, float", plane, Lp, strad, Ls, trials, a, b, CosTab<TabulatedLdRadialMap<float>, 8>{});
+    row("CW<TabulatedLdRadial>, 12 nodes", plane, Lp, strad, Ls, trials, a, b, CosTab<TabulatedLdRadialMap<double>, 12>{});
+    row("CW<TabulatedLdRadial>, 16 nodes", plane, Lp, strad, Ls, trials, a, b, CosTab<TabulatedLdRadialMap<double>, 16>{});
+    row("CW<TabulatedLdRadial>, 32 nodes", plane, Lp, strad, Ls, trials, a, b, CosTab<TabulatedLdRadialMap<double>, 32>{});
     row("CW<Radial>, 8 nodes", plane, Lp, strad, Ls, trials, a, b, Cos<RadialMap<double>, 8>{});
     row("CW<Tabulated>, 8 nodes", plane, Lp, strad, Ls, trials, a, b, CosTab<TabulatedMap<double>, 8>{});
     row("CW<Parallel>, 8 nodes", plane, Lp, strad, Ls, trials, a, b, Cos<ParallelMap<double>, 8>{});
+    // the straddling receivers split by the side of the horizon the light's centre is on (the
+    // tabulated maps' warp serves the first, the exact sampler both)
+    std::vector<Receiver> above, below;
+    for (const Receiver& r : strad) (glm::dot(r.n, Ls.c - r.p) > 0.0 ? above : below).push_back(r);
+    std::printf("\n| straddling receivers | plain LD-radial relMSE | CW<LdRadial> (exact sampler) | ratio | "
+                "CW<TabulatedLdRadial> | ratio |\n|---|---:|---:|---:|---:|---:|\n");
+    for (int k = 0; k < 2; ++k) {
+        const std::vector<Receiver>& set = k == 0 ? above : below;
+        const double p0 = run(set, Ls, trials, Plain<LdRadialMap<double>>{}).relmse;
+        const double p1 = run(set, Ls, trials, Cos<LdRadialMap<double>, 8>{}).relmse;
+        const double p2 = run(set, Ls, trials, CosTab<TabulatedLdRadialMap<double>, 8>{}).relmse;
+        std::printf("| centre %s the horizon (%zu) | %.3e | %.3e | %.1f | %.3e | %.1f |\n", k == 0 ? "above" : "below", set.size(),
+                    p0, p1, p0 / p1, p2, p0 / p2);
+    }
     return 0;
 }
