@@ -562,6 +562,52 @@ def check_projected_solid_angle():
     report('Projected-solid-angle sampling (§13)')
 
 
+def check_tabulated_cosine_warp():
+    """§13 (the tabulated maps' warp): the cosine along a ray in r = sqrt(u2), the horizon's
+    radius r_h, the two forms of the model c~ at a cut ray, its mass polynomial G, and c~'s
+    exactness at the centre, the rim and the horizon."""
+    rnd = random.Random(1313)
+    tiny = mpf(10) ** -30
+    checked = 0
+    while checked < 60:
+        tmax = mpf(rnd.uniform(0.001, 1.5))  # the ray's rim angle
+        C, st = cos(tmax), sin(tmax)
+        h, ipc = 1 - C, 1 / (1 + C)
+        nz, s = mpf(rnd.uniform(0.01, 1)), mpf(rnd.uniform(-1, 1))
+        b = s * st
+        r = mpf(rnd.uniform(0, 1))
+        theta = mp.acos(1 - h * r * r)  # u2 = r^2: cos theta = 1 − h u2
+        c_true = nz * cos(theta) + s * sin(theta)
+        rec('§13 warp: sin theta = r sqrt(h (2 − h r^2))', sin(theta) - r * sqrt(h * (2 - h * r * r)), tiny)
+        rec('§13 warp: h = sin^2 theta_max / (1 + C)', h - st ** 2 * ipc, tiny)
+        rim = nz * C + b
+        if rim >= 0:  # the whole ray above the horizon: c~ = nz (1 − h r^2) + b r
+            g2, g3, g4 = nz, 2 * b / 3, -nz * h / 2
+            model = lambda x: nz * (1 - h * x * x) + b * x
+            rec('§13 warp: c~ exact at the rim', model(1) - rim, tiny)
+            end = mpf(1)
+        else:  # cut at r_h: beta = sqrt(K (K + |b|) ipc), r_h = nz / beta
+            K = sqrt(nz ** 2 * st ** 2 + b ** 2)
+            beta = sqrt(K * (K + abs(b)) * ipc)
+            rh = nz / beta
+            th_h = atan2(nz, -s)  # tan theta_h = nz / (−s)
+            rec('§13 warp: r_h^2 = (1 − cos theta_h)/h', rh ** 2 - (1 - cos(th_h)) / h, tiny)
+            rec('§13 warp: the cosine vanishes at r_h', nz * cos(th_h) + s * sin(th_h), tiny)
+            bstar = nz * h * rh - beta
+            model = lambda x: beta * (rh - x) * (1 + h * rh * x)
+            rec('§13 warp: beta (rh − r)(1 + h rh r) = nz (1 − h r^2) + B* r',
+                model(r) - (nz * (1 - h * r * r) + bstar * r), tiny)
+            g2, g3, g4 = nz, 2 * bstar / 3, -nz * h / 2
+            end = rh
+            r = r * rh  # a point of [0, r_h]
+        rec('§13 warp: c~ exact at the centre', model(0) - nz, tiny)
+        G = r * r * (g2 + r * (g3 + g4 * r))
+        rec('§13 warp: G(r) = ∫ 2 x c~(x) dx', G - quad(lambda x: 2 * x * model(x), [0, r]), tiny)
+        rec('§13 warp: G(end) = ∫ c~ du2', end ** 2 * (g2 + end * (g3 + g4 * end)) - quad(lambda u: model(sqrt(u)), [0, end ** 2]), mpf(10) ** -25)
+        checked += 1
+    report("The tabulated maps' cosine warp (§13)")
+
+
 if __name__ == '__main__':
     check_ellipse_forms()
     check_projection()
@@ -569,6 +615,7 @@ if __name__ == '__main__':
     check_maps_and_tables()
     print_reference_values()
     check_projected_solid_angle()
+    check_tabulated_cosine_warp()
     if FAILED:
         print(f'\n{len(FAILED)} check(s) failed: ' + ', '.join(FAILED))
         sys.exit(1)

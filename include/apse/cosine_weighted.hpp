@@ -4,17 +4,22 @@
 
 /// @file cosine_weighted.hpp
 /// `CosineWeighted<Map>`: directions on a spherical ellipse drawn in proportion to the
-/// receiver's clamped cosine max(0, n·ω) along each azimuth exactly (no sample below the
-/// horizon), with the exact density reported — the cosine-weighted option of every map
-/// (RadialMap, LdRadialMap, ParallelMap, TabulatedMap, TabulatedLdRadialMap).
-/// docs/cosine_weighted.md has the derivation, the variants measured and the numbers.
+/// receiver's clamped cosine max(0, n·ω) (no sample below the horizon), with the exact density
+/// reported — the cosine-weighted option of every map (RadialMap, LdRadialMap, ParallelMap,
+/// TabulatedMap, TabulatedLdRadialMap). docs/cosine_weighted.md has the derivation, the variants
+/// measured and the numbers.
 ///
-/// How: the exact projected-solid-angle sampler of the map's ellipse
-/// (ProjectedSolidAngleSampler, projected_solid_angle.hpp) — it needs only the ellipse, so it
-/// serves every map alike; for the LD-radial maps the Shirley–Chiu concentric map comes first
-/// (u → (turns, radius^2) → the sampler), as in the maps themselves, so the point set's
-/// stratification is kept across the square's seam. The map itself serves a zero or NaN normal
-/// (the plain map).
+/// How, by map:
+/// * the tabulated maps, while the ellipse's centre is above the horizon: a warp of the map's own
+///   square (maps/tabulated_cosine.hpp) that reuses the map's sample — a piecewise-linear
+///   marginal over its azimuth coordinate and a model of the cosine along each ray whose root is
+///   the horizon's exact crossing;
+/// * the exact maps, and the tabulated maps with the centre on or below the horizon: the exact
+///   projected-solid-angle sampler of the map's ellipse (ProjectedSolidAngleSampler,
+///   projected_solid_angle.hpp), which needs only the ellipse.
+/// For the LD-radial maps the Shirley–Chiu concentric map comes first (u → (turns, radius^2) →
+/// the weighting), as in the maps themselves, so the point set's stratification is kept across
+/// the square's seam. The map itself serves a zero or NaN normal (the plain map).
 
 #include <cmath>
 #include <type_traits>
@@ -85,7 +90,7 @@ struct NoCosineWarp {};
 /// Cosine-weighted sampling of a spherical ellipse (file comment; docs/cosine_weighted.md):
 /// `Map` is RadialMap<T>, LdRadialMap<T>, ParallelMap<T>, TabulatedMap<T> or
 /// TabulatedLdRadialMap<T>; `Nodes` (a multiple of 4) is the number of azimuths at which the
-/// sampler's marginal is exact (the default is the measured trade-off between variance and
+/// azimuth's marginal is exact (the default is the measured trade-off between variance and
 /// set-up cost; docs/cosine_weighted.md). Every sample lies above the receiver's horizon.
 /// Measured: relMSE of irradiance far below the plain LD-radial map's at 16 jittered samples
 /// (docs/cosine_weighted.md has the numbers and the cost). Trivially copyable (pass it to
@@ -104,7 +109,9 @@ public:
     /// the receiver's side is the one it points to). The light entirely below the receiver's
     /// horizon (max n·ω <= 0 over the ellipse, an exact test) or an empty map: empty(), every
     /// pdf 0. A zero, NaN or infinite normal: no weighting — the samples, pdf and invert of the
-    /// plain map (`weighted()` is then false).
+    /// plain map (`weighted()` is then false). A tabulated map uses the warp when the normal's
+    /// component along the ellipse's axis exceeds 1e-3 of its largest component in the ellipse's
+    /// frame (the centre above the horizon), the exact sampler otherwise.
     APSE_FUNC CosineWeighted(const Map& map, const vec3& normal) noexcept
         : mode_(Mode::empty), base_(Traits::base(map)) {
         if (!Traits::valid(base_)) return;
@@ -122,7 +129,7 @@ public:
             }
         }
         w_.psa = ProjectedSolidAngleSampler<T, Nodes>(base_.ellipse(), normal);
-        if (!w_.psa.empty()) mode_ = Mode::weighted;
+        if (!w_.psa.empty()) mode_ = Mode::exact;
     }
 
     /// True if the sampler cannot sample (empty map or light entirely below the horizon): every
@@ -130,15 +137,16 @@ public:
     APSE_FUNC bool empty() const noexcept { return mode_ == Mode::empty; }
 
     /// True if the samples are cosine-weighted (false for an empty sampler or a zero/NaN normal).
-    APSE_FUNC bool weighted() const noexcept { return mode_ == Mode::weighted || mode_ == Mode::warped; }
+    APSE_FUNC bool weighted() const noexcept { return mode_ == Mode::exact || mode_ == Mode::warped; }
 
     /// The ellipse sampled.
     APSE_FUNC const SphericalEllipse<T>& ellipse() const noexcept { return base_.ellipse(); }
 
     /// Direction for the point u of the unit square (clamped into [0, 1]^2): a world-space unit
     /// vector inside the ellipse, above the receiver's horizon when weighted(), with its exact
-    /// density in solid angle (ProjectedSolidAngleSampler::sample, after the concentric map for
-    /// the LD-radial maps). NaN u or empty(): pdf 0 and the ellipse's centre direction.
+    /// density in solid angle (the warp's or ProjectedSolidAngleSampler's sample, after the
+    /// concentric map for the LD-radial maps). NaN u or empty(): pdf 0 and the ellipse's centre
+    /// direction.
     APSE_FUNC DirectionSample<T> sample(const vec2& u) const noexcept {
         if (mode_ == Mode::empty) return {base_.ellipse().z, T(0)};
         if (mode_ == Mode::plain) {  // the plain map's own sample
@@ -177,7 +185,7 @@ public:
     /// zero/NaN direction. Equals the pdf sample() reports.
     APSE_FUNC T pdf(const vec3& d) const noexcept {
         if (mode_ == Mode::empty) return T(0);
-        if (mode_ == Mode::weighted) return w_.psa.pdf(d);
+        if (mode_ == Mode::exact) return w_.psa.pdf(d);
         if constexpr (Traits::tabulated) {
             if (mode_ == Mode::warped) {
                 vec3 l;
@@ -201,7 +209,7 @@ public:
                 v = w_.warp.invert(base_, l);
             }
         }
-        if (mode_ != Mode::warped) v = mode_ == Mode::weighted ? w_.psa.invert(d) : base_.invert(d);
+        if (mode_ != Mode::warped) v = mode_ == Mode::exact ? w_.psa.invert(d) : base_.invert(d);
         if (Traits::ld) return detail::concentric_from_disk(std::sqrt(detail::clamp(v.y, T(0), T(1))), v.x);
         return v;
     }
@@ -215,7 +223,7 @@ private:
         return ok;
     }
 
-    enum class Mode : int { empty, plain, weighted, warped };
+    enum class Mode : int { empty, plain, exact, warped };  // exact: ProjectedSolidAngleSampler
     using Warp = std::conditional_t<Traits::tabulated, detail::TabulatedCosineWarp<T, Nodes>, detail::NoCosineWarp>;
     Mode mode_;
     Base base_;

@@ -74,7 +74,7 @@ template <class T> using DiskLightSample = PointSample<T>;
 /// uniformly in solid angle (exact maps), with a tabulated map's density, or, given the
 /// receiver's normal, cosine-weighted (CosineWeighted). Trivially copyable (the tabulated maps
 /// hold a pointer into the table, which must outlive the light); holds only the chosen sampler
-/// (a union: 880 bytes in double, 472 in float, set by the cosine-weighted tabulated samplers;
+/// (a union: 824 bytes in double, 432 in float, set by the cosine-weighted tabulated samplers;
 /// the plain maps alone would take 488 and 272).
 template <class T> class DiskLight {
     static_assert(detail::is_real_type<T>(), "apse: DiskLight<T>: T must be float or double");
