@@ -520,7 +520,8 @@ double projected_solid_angle(const Config& c, int rings, int sectors) {
 /// invert(sample(u)) = u, and the Monte Carlo mean of ∫ max(0, n·ω) dω within 5 standard errors
 /// of quadrature (plus the quadrature's own error: the difference of two resolutions).
 template <class T, class Sampler>
-void check_extreme(const Config& c, const apse::SphericalEllipse<T>& e, const Sampler& s, const char* sampler) {
+void check_extreme(const Config& c, const apse::SphericalEllipse<T>& e, const Sampler& s, const char* sampler,
+                   double float_bound = 3e-5) {
     INFO(c.name << ", " << sampler << (sizeof(T) == 4 ? ", float" : ", double"));
     REQUIRE_FALSE(s.empty());
     const glm::dvec3 n = glm::normalize(c.normal);
@@ -555,9 +556,9 @@ void check_extreme(const Config& c, const apse::SphericalEllipse<T>& e, const Sa
                         << "; worst pdf ratio − 1 " << worst_pdf << ", worst |invert(sample(u)) − u| " << worst_u);
     CHECK(bad == 0);
     CHECK(std::fabs(mean - ref) < 5 * se + std::fabs(ref - ref_coarse) + 1e-6 * ref);
-    // as in the round trip above: ~10× the worst measured over these lights (float 2.9e-6,
-    // double below 1e-13)
-    CHECK(worst_pdf < (sizeof(T) == 4 ? 3e-5 : 1e-12));
+    // as in the round trip above: ~10× the worst measured over these lights for the exact sampler
+    // (float 2.9e-6, double below 1e-13); `float_bound` for the tabulated maps' warp (below)
+    CHECK(worst_pdf < (sizeof(T) == 4 ? float_bound : 1e-12));
     CHECK(worst_u < (sizeof(T) == 4 ? 3e-5 : 1e-12));
 }
 
@@ -589,17 +590,22 @@ template <class T> bool uses_warp(const apse::SphericalEllipse<T>& e, const glm:
 
 TEMPLATE_TEST_CASE("cosine-weighted tabulated maps: extreme lights and every test light", "[cosine]", float, double) {
     // The warp the tabulated maps use while the centre is above the horizon (and the exact
-    // sampler otherwise) through the same checks as the exact sampler above.
+    // sampler otherwise) through the same checks as the exact sampler above. The warp's pdf at a
+    // direction is the tabulated map's, recomputed from the direction (lambda through atan2,
+    // r = sqrt(u2) from 1 − cos theta: float rounding moves r by ~eps/(2 r (1 − C)) near the
+    // centre), times the warp's density there: in float it matches the reported pdf to the
+    // tabulated map's own precision (test_tabulated.cpp: 1e-3), measured here 1.3e-5 with g++ and
+    // 4.5e-5 with clang ("disk, oblique, near"), hence the bound 2e-4 in float (double: unchanged).
     using T = TestType;
     int warped = 0;
     auto check = [&](const Config& c) {
         const apse::SphericalEllipse<T> e = light_ellipse<T>(c);
         warped += uses_warp(e, tv<T>(c.normal)) ? 1 : 0;
         check_extreme(c, e, apse::CosineWeighted<apse::TabulatedMap<T>>(apse::TabulatedMap<T>(e, table_view()), tv<T>(c.normal)),
-                      "CosineWeighted<TabulatedMap>");
+                      "CosineWeighted<TabulatedMap>", 2e-4);
         check_extreme(c, e,
                       apse::CosineWeighted<apse::TabulatedLdRadialMap<T>>(apse::TabulatedLdRadialMap<T>(e, table_view()), tv<T>(c.normal)),
-                      "CosineWeighted<TabulatedLdRadialMap>");
+                      "CosineWeighted<TabulatedLdRadialMap>", 2e-4);
     };
     for (const Config& c : kExtremes) check(c);
     for (const Config& c : kConfigs) check(c);
