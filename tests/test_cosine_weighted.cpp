@@ -594,18 +594,20 @@ TEMPLATE_TEST_CASE("cosine-weighted tabulated maps: extreme lights and every tes
     // direction is the tabulated map's, recomputed from the direction (lambda through atan2,
     // r = sqrt(u2) from 1 − cos theta: float rounding moves r by ~eps/(2 r (1 − C)) near the
     // centre), times the warp's density there: in float it matches the reported pdf to the
-    // tabulated map's own precision (test_tabulated.cpp: 1e-3), measured here 1.3e-5 with g++ and
-    // 4.5e-5 with clang ("disk, oblique, near"), hence the bound 2e-4 in float (double: unchanged).
+    // tabulated map's own precision (test_tabulated.cpp: 1e-3, 2 % within a few ulps of a bin
+    // edge), measured here 1.3e-5 with g++, 4.5e-5 with clang ("disk, oblique, near") and 1.5e-3
+    // with g++ -ffast-math (the thin ellipse, whose azimuth float resolves worst), hence the bound
+    // 5e-3 in float (double: unchanged).
     using T = TestType;
     int warped = 0;
     auto check = [&](const Config& c) {
         const apse::SphericalEllipse<T> e = light_ellipse<T>(c);
         warped += uses_warp(e, tv<T>(c.normal)) ? 1 : 0;
         check_extreme(c, e, apse::CosineWeighted<apse::TabulatedMap<T>>(apse::TabulatedMap<T>(e, table_view()), tv<T>(c.normal)),
-                      "CosineWeighted<TabulatedMap>", 2e-4);
+                      "CosineWeighted<TabulatedMap>", 5e-3);
         check_extreme(c, e,
                       apse::CosineWeighted<apse::TabulatedLdRadialMap<T>>(apse::TabulatedLdRadialMap<T>(e, table_view()), tv<T>(c.normal)),
-                      "CosineWeighted<TabulatedLdRadialMap>", 2e-4);
+                      "CosineWeighted<TabulatedLdRadialMap>", 5e-3);
     };
     for (const Config& c : kExtremes) check(c);
     for (const Config& c : kConfigs) check(c);
@@ -649,8 +651,11 @@ TEMPLATE_TEST_CASE("cosine-weighted tabulated maps: random ellipses and normals,
             const T p = s.pdf(d.direction);
             REQUIRE(std::isfinite(double(p)));
             // the warp's pdf(sample) = reported, at interior points of the square away from the horizon
-            // (where the cosine's rounding dominates; on the rim the direction may round outside)
-            if (uses_warp(e, n) && k < 3 && d.pdf > T(0) && cosv > 1e-3)
+            // (where the cosine's rounding dominates; on the rim the direction may round outside), for
+            // tan beta >= 1e-15 in float (below, the squares of the direction's components come near
+            // float's subnormal range, flushed to zero under -ffast-math: the azimuth is lost)
+            const bool resolved = sizeof(T) == 8 || tb >= 1e-15;
+            if (uses_warp(e, n) && resolved && k < 3 && d.pdf > T(0) && cosv > 1e-3)
                 worst_pdf = std::max(worst_pdf, std::fabs(double(p) / double(d.pdf) - 1.0));
             const glm::vec<2, T> b = s.invert(d.direction);
             REQUIRE(std::isfinite(double(b.x) + double(b.y)));
@@ -661,8 +666,8 @@ TEMPLATE_TEST_CASE("cosine-weighted tabulated maps: random ellipses and normals,
     CHECK(samplers > 5000);
     CHECK(warped > 2000);
     CHECK(declined * 1000 < interior);
-    // measured: 1.5e-5 in float (a large ellipse near its rim, the float direction's rounding),
-    // below 1e-15 in double; the bounds ~7× and ~1000× that
+    // measured: 1.5e-5 in float (a large ellipse near its rim, the float direction's rounding;
+    // 1.0e-5 under -ffast-math), below 1e-15 in double; the bounds ~7× and ~1000× that
     CHECK(worst_pdf < (sizeof(T) == 4 ? 1e-4 : 1e-12));
 }
 
