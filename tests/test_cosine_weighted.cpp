@@ -614,51 +614,88 @@ TEMPLATE_TEST_CASE("cosine-weighted tabulated maps: extreme lights and every tes
     CHECK(warped >= 8);  // the test lights with the centre above the horizon (counted: 9)
 }
 
+namespace {
+
+/// The fuzz tests' random ellipse: tangents from 1e-20 to 1e20 (a twentieth of them 1e30, beyond
+/// the cap), the minor's down to 1e-10 of the major's (returned in `tb`).
+template <class T> apse::SphericalEllipse<T> fuzz_ellipse(apse_test::Rng& rng, double& tb) {
+    using V3 = glm::vec<3, T>;
+    double ta = std::pow(10.0, -20 + 40 * rng.uniform<double>());
+    tb = ta * std::pow(10.0, -10 * rng.uniform<double>());
+    if (rng.uniform<double>() < 0.05) ta = 1e30;
+    return apse::SphericalEllipse<T>::from_tangents(V3(1, 0, 0), V3(0, 1, 0), V3(0, 0, 1), T(ta), T(tb));
+}
+
+/// The fuzz tests' random normal in the ellipse's frame: any direction; with probability
+/// `zero_z` perpendicular to the axis, then with probability 0.1 its axial component uniform in
+/// ±small_z/2, and a twentieth of them tiny (1e-30 of unit length).
+template <class T> glm::vec<3, T> fuzz_normal(apse_test::Rng& rng, double zero_z, double small_z) {
+    glm::vec<3, T> n(T(rng.uniform<double>() * 2 - 1), T(rng.uniform<double>() * 2 - 1), T(rng.uniform<double>() * 2 - 1));
+    if (zero_z > 0 && rng.uniform<double>() < zero_z) n.z = T(0);
+    if (rng.uniform<double>() < 0.1) n.z = T((rng.uniform<double>() - 0.5) * small_z);
+    if (rng.uniform<double>() < 0.05) n *= T(1e-30);
+    return n;
+}
+
+/// One fuzz sample and the pdf there.
+template <class T> struct FuzzSample {
+    apse::DirectionSample<T> sample;
+    double cos_theta;  ///< with the receiver's unit normal
+    T pdf;             ///< pdf(sample.direction)
+};
+
+/// The fuzz tests' k-th sample of `s` (k < 3: a random interior point of the square, counted in
+/// `interior` and, if declined (pdf 0), in `declined`; k = 3: a random corner), with the checks
+/// both make: sample, pdf and inverse finite, the pdf >= 0, a sample with pdf > 0 above the
+/// horizon of the unit normal `nd` (to float's rounding of the direction).
+template <class T, class Sampler>
+FuzzSample<T> fuzz_sample(const Sampler& s, apse_test::Rng& rng, int k, const glm::dvec3& nd, int& interior, int& declined) {
+    glm::vec<2, T> u(rng.uniform<T>(), rng.uniform<T>());
+    if (k == 3) u = glm::vec<2, T>(T(rng.uniform<double>() < 0.5 ? 0 : 1), T(rng.uniform<double>() < 0.5 ? 0 : 1));
+    const auto d = s.sample(u);
+    const double w = double(d.direction.x) + double(d.direction.y) + double(d.direction.z);
+    REQUIRE(std::isfinite(double(d.pdf)));
+    REQUIRE(std::isfinite(w));
+    REQUIRE(d.pdf >= T(0));
+    const double cos_theta = glm::dot(nd, glm::dvec3(d.direction));
+    if (d.pdf > T(0)) REQUIRE(cos_theta > -1e-6);  // float's rounding of the direction
+    if (k < 3) ++interior, declined += d.pdf > T(0) ? 0 : 1;
+    const T p = s.pdf(d.direction);
+    REQUIRE(std::isfinite(double(p)));
+    const glm::vec<2, T> b = s.invert(d.direction);
+    REQUIRE(std::isfinite(double(b.x) + double(b.y)));
+    return {d, cos_theta, p};
+}
+
+}  // namespace
+
 TEMPLATE_TEST_CASE("cosine-weighted tabulated maps: random ellipses and normals, finite results", "[cosine]", float, double) {
-    // As the exact sampler's test above, through CosineWeighted<TabulatedMap> (the warp where the
+    // As the exact sampler's fuzz test below, through CosineWeighted<TabulatedMap> (the warp where the
     // centre is above the horizon): every sample, pdf and inverse finite, every sample with pdf > 0
     // above the horizon (to the rounding of the direction), the pdf of a sample equal to the
     // reported one, few samples declined at interior points of the square.
     using T = TestType;
-    using V3 = glm::vec<3, T>;
     apse_test::Rng rng(2027);
     int samplers = 0, warped = 0, declined = 0, interior = 0;
     double worst_pdf = 0;
     for (int i = 0; i < 20000; ++i) {
-        double ta = std::pow(10.0, -20 + 40 * rng.uniform<double>());
-        const double tb = ta * std::pow(10.0, -10 * rng.uniform<double>());
-        if (rng.uniform<double>() < 0.05) ta = 1e30;
-        const auto e = apse::SphericalEllipse<T>::from_tangents(V3(1, 0, 0), V3(0, 1, 0), V3(0, 0, 1), T(ta), T(tb));
-        V3 n(T(rng.uniform<double>() * 2 - 1), T(rng.uniform<double>() * 2 - 1), T(rng.uniform<double>() * 2 - 1));
-        if (rng.uniform<double>() < 0.1) n.z = T((rng.uniform<double>() - 0.5) * 1e-2);
-        if (rng.uniform<double>() < 0.05) n *= T(1e-30);
+        double tb = 0;
+        const apse::SphericalEllipse<T> e = fuzz_ellipse<T>(rng, tb);
+        const glm::vec<3, T> n = fuzz_normal<T>(rng, 0.0, 1e-2);
         const apse::CosineWeighted<apse::TabulatedMap<T>> s(apse::TabulatedMap<T>(e, table_view()), n);
         if (s.empty()) continue;
         ++samplers;
         warped += uses_warp(e, n) ? 1 : 0;
         const glm::dvec3 nd = glm::normalize(glm::dvec3(n));
         for (int k = 0; k < 4; ++k) {
-            glm::vec<2, T> u(rng.uniform<T>(), rng.uniform<T>());
-            if (k == 3) u = glm::vec<2, T>(T(rng.uniform<double>() < 0.5 ? 0 : 1), T(rng.uniform<double>() < 0.5 ? 0 : 1));
-            const auto d = s.sample(u);
-            const double w = double(d.direction.x) + double(d.direction.y) + double(d.direction.z);
-            REQUIRE(std::isfinite(double(d.pdf)));
-            REQUIRE(std::isfinite(w));
-            REQUIRE(d.pdf >= T(0));
-            const double cosv = glm::dot(nd, glm::dvec3(d.direction));
-            if (d.pdf > T(0)) REQUIRE(cosv > -1e-6);  // float's rounding of ω
-            if (k < 3) ++interior, declined += d.pdf > T(0) ? 0 : 1;
-            const T p = s.pdf(d.direction);
-            REQUIRE(std::isfinite(double(p)));
+            const FuzzSample<T> f = fuzz_sample<T>(s, rng, k, nd, interior, declined);
             // the warp's pdf(sample) = reported, at interior points of the square away from the horizon
             // (where the cosine's rounding dominates; on the rim the direction may round outside), for
             // tan beta >= 1e-15 in float (below, the squares of the direction's components come near
             // float's subnormal range, flushed to zero under -ffast-math: the azimuth is lost)
             const bool resolved = sizeof(T) == 8 || tb >= 1e-15;
-            if (uses_warp(e, n) && resolved && k < 3 && d.pdf > T(0) && cosv > 1e-3)
-                worst_pdf = std::max(worst_pdf, std::fabs(double(p) / double(d.pdf) - 1.0));
-            const glm::vec<2, T> b = s.invert(d.direction);
-            REQUIRE(std::isfinite(double(b.x) + double(b.y)));
+            if (uses_warp(e, n) && resolved && k < 3 && f.sample.pdf > T(0) && f.cos_theta > 1e-3)
+                worst_pdf = std::max(worst_pdf, std::fabs(double(f.pdf) / double(f.sample.pdf) - 1.0));
         }
     }
     INFO(samplers << " samplers (" << warped << " warped), " << declined << " of " << interior
@@ -725,36 +762,17 @@ TEMPLATE_TEST_CASE("projected-solid-angle sampler: random ellipses and normals, 
     // are rare (measured: 16 of 430 000 in float, 4 of 490 000 in double, all on ellipses thinner
     // than 5e9 : 1 whose centre is below the horizon).
     using T = TestType;
-    using V3 = glm::vec<3, T>;
     apse_test::Rng rng(2026);
     int samplers = 0, declined = 0, interior = 0;
     for (int i = 0; i < 20000; ++i) {
-        double ta = std::pow(10.0, -20 + 40 * rng.uniform<double>());
-        const double tb = ta * std::pow(10.0, -10 * rng.uniform<double>());
-        if (rng.uniform<double>() < 0.05) ta = 1e30;
-        const auto e = apse::SphericalEllipse<T>::from_tangents(V3(1, 0, 0), V3(0, 1, 0), V3(0, 0, 1), T(ta), T(tb));
-        V3 n(T(rng.uniform<double>() * 2 - 1), T(rng.uniform<double>() * 2 - 1), T(rng.uniform<double>() * 2 - 1));
-        if (rng.uniform<double>() < 0.2) n.z = T(0);
-        if (rng.uniform<double>() < 0.1) n.z = T((rng.uniform<double>() - 0.5) * 1e-6);
-        if (rng.uniform<double>() < 0.05) n *= T(1e-30);
+        double tb = 0;
+        const apse::SphericalEllipse<T> e = fuzz_ellipse<T>(rng, tb);
+        const glm::vec<3, T> n = fuzz_normal<T>(rng, 0.2, 1e-6);
         const apse::ProjectedSolidAngleSampler<T> s(e, n);
         if (s.empty()) continue;
         ++samplers;
         const glm::dvec3 nd = glm::normalize(glm::dvec3(n));
-        for (int k = 0; k < 4; ++k) {
-            glm::vec<2, T> u(rng.uniform<T>(), rng.uniform<T>());
-            if (k == 3) u = glm::vec<2, T>(T(rng.uniform<double>() < 0.5 ? 0 : 1), T(rng.uniform<double>() < 0.5 ? 0 : 1));
-            const auto d = s.sample(u);
-            const double w = double(d.direction.x) + double(d.direction.y) + double(d.direction.z);
-            REQUIRE(std::isfinite(double(d.pdf)));
-            REQUIRE(std::isfinite(w));
-            REQUIRE(d.pdf >= T(0));
-            if (d.pdf > T(0)) REQUIRE(glm::dot(nd, glm::dvec3(d.direction)) > -1e-6);  // float's rounding of ω
-            if (k < 3) ++interior, declined += d.pdf > T(0) ? 0 : 1;
-            REQUIRE(std::isfinite(double(s.pdf(d.direction))));
-            const glm::vec<2, T> b = s.invert(d.direction);
-            REQUIRE(std::isfinite(double(b.x) + double(b.y)));
-        }
+        for (int k = 0; k < 4; ++k) fuzz_sample<T>(s, rng, k, nd, interior, declined);
     }
     INFO(samplers << " samplers, " << declined << " of " << interior << " interior samples declined");
     CHECK(samplers > 10000);

@@ -163,13 +163,9 @@ public:
         if constexpr (Traits::tabulated) {
             if (mode_ == Mode::warped) {
                 if constexpr (!Traits::ld) return w_.warp.sample(base_, uc.x, uc.y, std::sqrt(uc.y));
-                // the concentric map's (turns, radius), without branches: the quadrant of its
-                // point from the signs, the fraction of the quarter turn unfolded (fold_quadrant)
+                // the concentric map's (turns, radius), without branches
                 const detail::ConcentricFold<T> d = detail::concentric_fold(uc);
-                const T base = d.fold.sign_y > T(0) ? T(1) - d.fold.sign_x : T(3) + d.fold.sign_x;
-                const T turns = T(0.25) * (base + d.fold.sign_x * d.fold.sign_y * d.fold.fraction);
-                const T radius = detail::max_of(std::fabs(T(2) * uc.x - T(1)), std::fabs(T(2) * uc.y - T(1)));
-                return w_.warp.sample(base_, turns, d.radius2, radius);
+                return w_.warp.sample(base_, detail::unfold_quadrant(d.fold), d.radius2, d.radius);
             }
         }
         vec2 v = uc;

@@ -52,11 +52,12 @@ template <class T> APSE_FUNC ConcentricPolar<T> concentric_to_disk(const glm::ve
 }
 
 /// The concentric map's point of u, folded as the LD-radial map reads it: the quadrant and the
-/// fraction of its quarter turn that fold_quadrant(turns) gives, and radius^2.
+/// fraction of its quarter turn that fold_quadrant(turns) gives, the radius and its square.
 template <class T> struct ConcentricFold {
     QuadrantFold<T> fold;  ///< quadrant (signs of the disk point's x, y) and the fraction of the
                            ///< quarter turn measured from the x axis
-    T radius2;             ///< radius^2, in [0, 1]
+    T radius;              ///< radius, in [0, 1]
+    T radius2;             ///< radius^2
 };
 
 /// concentric_to_disk(u) folded onto the first quadrant, without branches: with A = 2u1 − 1 and
@@ -74,7 +75,7 @@ template <class T> APSE_FUNC ConcentricFold<T> concentric_fold(const glm::vec<2,
     // (|B| − |A|)/(2M) with the centre (0/0) sent to 0: away from the centre M >= 2^-53 (a and b
     // are multiples of 2^-53), so the divisor is 2M itself there.
     const T fraction = T(0.5) + (fb - fa) / max_of(m + m, T(0x1p-64));
-    return {{std::copysign(T(1), a), std::copysign(T(1), b), clamp_non_nan(fraction, T(0), T(1))}, m * m};
+    return {{std::copysign(T(1), a), std::copysign(T(1), b), clamp_non_nan(fraction, T(0), T(1))}, m, m * m};
 }
 
 /// A point of the unit disk in signed polar form: radius (cos angle, sin angle) with `radius`

@@ -78,6 +78,14 @@ template <class T> APSE_FUNC T unfold_quadrant_fraction(int q, T f) noexcept {
     return ((q & 1) ? (T(q + 1) - f) : (T(q) + f)) * T(0.25);
 }
 
+/// Inverse of fold_quadrant from the fold itself, without branches (for a random point): the
+/// quadrant's base (0, 2, 2, 4 quarter turns for q = 0..3, from the signs) plus the fraction,
+/// reflected in the odd quadrants (where sign_x sign_y = −1).
+template <class T> APSE_FUNC T unfold_quadrant(const QuadrantFold<T>& fold) noexcept {
+    const T base = fold.sign_y > T(0) ? T(1) - fold.sign_x : T(3) + fold.sign_x;
+    return T(0.25) * (base + fold.sign_x * fold.sign_y * fold.fraction);
+}
+
 /// Maps a first-quadrant local (x >= 0, y >= 0) onto the quadrant of `fold` by the reflections
 /// (x, y) → (±x, ±y): (sign_x x, sign_y y, z). Exact (and free of branches).
 template <class T>
