@@ -241,6 +241,8 @@ int main(int argc, char** argv) {
     register_setup<Parallel>();
     register_setup<Tabulated>();
     register_setup<TabulatedLdRadial>();
+    register_setup<Cosine<Tabulated, cosine_tabulated>>();  // the map's set-up + the warp's
+    register_setup<Cosine<TabulatedLdRadial, cosine_tabulated_ld_radial>>();
     register_sampler<Cosine<Radial, cosine_radial>>();
     register_sampler<Cosine<LdRadial, cosine_ld_radial>>();
     register_sampler<Cosine<Parallel, cosine_parallel>>();

@@ -78,7 +78,7 @@ SAMPLERS = [
 PARTS = [('projection', 'project_disk'), ('projection_solid_angle', 'project_disk + solid_angle')]
 # maps in the cost breakdown, and whether their set-up computes the solid angle
 BREAKDOWN = [('radial', True), ('ld_radial', True), ('parallel', True), ('tabulated', False),
-             ('tabulated_ld_radial', False)]
+             ('tabulated_ld_radial', False), ('cosine_tabulated', False), ('cosine_tabulated_ld_radial', False)]
 SAMPLER_NAME = re.compile(r'^(\w+)/(float|double)/(\d+)$')
 
 
