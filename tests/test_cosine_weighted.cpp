@@ -588,6 +588,41 @@ template <class T> bool uses_warp(const apse::SphericalEllipse<T>& e, const glm:
     return double(l.z) > 1e-3 * std::max({std::fabs(double(l.x)), std::fabs(double(l.y)), std::fabs(double(l.z))});
 }
 
+TEMPLATE_TEST_CASE("cosine-weighted: a zero, NaN or infinite direction inverts to (0, 0) in every mode", "[cosine]", float, double) {
+    // As the plain maps' invert: the plain mode (a zero normal), the exact sampler and the warp,
+    // over the LD-radial maps (whose concentric map would send the inner (0, 0) to the square's
+    // centre) and the radial ones; a valid direction inverts as the plain map in the plain mode.
+    using T = TestType;
+    using V3 = glm::vec<3, T>;
+    using V2 = glm::vec<2, T>;
+    const T nan = std::numeric_limits<T>::quiet_NaN(), inf = std::numeric_limits<T>::infinity();
+    const apse::SphericalEllipse<T> e = light_ellipse<T>(kConfigs[0]);
+    const V3 n = tv<T>(kConfigs[0].normal);
+    REQUIRE(uses_warp(e, n));
+    const V3 bad[] = {V3(T(0)), V3(nan, T(0), T(1)), V3(inf, T(0), T(1))};
+    auto check = [&](const auto& s, const auto& plain, bool weighted) {
+        CHECK(s.weighted() == weighted);
+        for (const V3& d : bad) {
+            CHECK(s.invert(d) == V2(T(0)));
+            CHECK(plain.invert(d) == V2(T(0)));
+        }
+        if (!weighted) {
+            const V3 d = plain.sample(V2(T(0.3), T(0.7))).direction;
+            CHECK(s.invert(d) == plain.invert(d));
+        }
+    };
+    const apse::LdRadialMap<T> ld(e);
+    const apse::RadialMap<T> radial(e);
+    const apse::TabulatedLdRadialMap<T> tab_ld(e, table_view());
+    const apse::TabulatedMap<T> tab(e, table_view());
+    check(apse::CosineWeighted<apse::LdRadialMap<T>>(ld, V3(T(0))), ld, false);
+    check(apse::CosineWeighted<apse::LdRadialMap<T>>(ld, n), ld, true);
+    check(apse::CosineWeighted<apse::RadialMap<T>>(radial, n), radial, true);
+    check(apse::CosineWeighted<apse::TabulatedLdRadialMap<T>>(tab_ld, V3(T(0))), tab_ld, false);
+    check(apse::CosineWeighted<apse::TabulatedLdRadialMap<T>>(tab_ld, n), tab_ld, true);
+    check(apse::CosineWeighted<apse::TabulatedMap<T>>(tab, n), tab, true);
+}
+
 TEMPLATE_TEST_CASE("cosine-weighted tabulated maps: extreme lights and every test light", "[cosine]", float, double) {
     // The warp the tabulated maps use while the centre is above the horizon (and the exact
     // sampler otherwise) through the same checks as the exact sampler above. The warp's pdf at a

@@ -132,6 +132,13 @@ TEMPLATE_TEST_CASE("disk light from a stored DiskFrame: every map, plain and cos
     // the table-free overloads: exact maps; a tabulated map without a table is the empty light
     CHECK(apse::DiskLight<T>(o, frame).map() == apse::DiskMap::ld_radial);
     CHECK(apse::DiskLight<T>(o, frame, apse::DiskMap::parallel, nr).cosine_weighted());
+    // cosine_weighted() is whether the samples are: not for a zero receiver normal (the plain
+    // map) nor for the light below the receiver's horizon (empty)
+    CHECK_FALSE(apse::DiskLight<T>(o, frame, apse::DiskMap::parallel, Vec3<T>(0)).cosine_weighted());
+    CHECK_FALSE(apse::DiskLight<T>(o, frame, apse::DiskMap::tabulated_ld_radial, table, Vec3<T>(0)).cosine_weighted());
+    const apse::DiskLight<T> below(o, frame, apse::DiskMap::tabulated_ld_radial, table, -(frame.center - o));
+    CHECK(below.empty());
+    CHECK_FALSE(below.cosine_weighted());
     CHECK(apse::DiskLight<T>(o, frame, apse::DiskMap::tabulated).empty());
     // an invalid frame gives the empty light
     const T nan = std::numeric_limits<T>::quiet_NaN();

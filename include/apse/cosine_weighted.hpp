@@ -196,14 +196,11 @@ public:
     /// the concentric map's for the LD-radial maps). Outside the ellipse: clamped formulas.
     /// Zero/NaN direction or empty(): (0, 0).
     APSE_FUNC vec2 invert(const vec3& d) const noexcept {
-        if (mode_ == Mode::empty) return vec2(T(0));
+        vec3 l;
+        if (mode_ == Mode::empty || !local(d, l)) return vec2(T(0));
         vec2 v;
         if constexpr (Traits::tabulated) {
-            if (mode_ == Mode::warped) {
-                vec3 l;
-                if (!local(d, l)) return vec2(T(0));
-                v = w_.warp.invert(base_, l);
-            }
+            if (mode_ == Mode::warped) v = w_.warp.invert(base_, l);
         }
         if (mode_ != Mode::warped) v = mode_ == Mode::exact ? w_.psa.invert(d) : base_.invert(d);
         if (Traits::ld) return detail::concentric_from_disk(std::sqrt(detail::clamp(v.y, T(0), T(1))), v.x);

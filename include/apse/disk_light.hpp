@@ -23,7 +23,8 @@
 ///
 /// Every pdf here is exactly the density its sampler draws from: 1/Omega for the exact maps
 /// (radial, LD-radial, parallel), the tabulated maps' own density (within 0.44 % of 1/Omega for
-/// the default table, not equal to it), the cosine-weighted density (ProjectedSolidAngleSampler) for the cosine-weighted samplers —
+/// the default table, not equal to it), the cosine-weighted density (CosineWeighted: the
+/// tabulated maps' warp or ProjectedSolidAngleSampler) for the cosine-weighted samplers —
 /// so MIS weights computed with them sum to 1.
 ///
 /// The geometry is two-sided (the disk seen from behind gives the same ellipse); one-sided
@@ -69,13 +70,18 @@ APSE_FUNC constexpr bool is_tabulated(DiskMap map) noexcept {
 /// the disk hit along the direction and its distance (the result family's PointSample).
 template <class T> using DiskLightSample = PointSample<T>;
 
+namespace detail {
+struct DiskLightAccess;
+}  // namespace detail
+
 /// A disk light seen from one shading point, ready to sample with one of the maps (the set-up
 /// — projection, map — is done once in the constructor; sample() as often as needed),
 /// uniformly in solid angle (exact maps), with a tabulated map's density, or, given the
 /// receiver's normal, cosine-weighted (CosineWeighted). Trivially copyable (the tabulated maps
 /// hold a pointer into the table, which must outlive the light); holds only the chosen sampler
-/// (a union: 824 bytes in double, 432 in float, set by the cosine-weighted tabulated samplers;
-/// the plain maps alone would take 488 and 272).
+/// (a union: 824 bytes in double, 432 in float, set by the cosine-weighted samplers — in double
+/// CosineWeighted<ParallelMap>, 744 bytes, in float the tabulated maps', 384; the plain maps
+/// alone would take 432 and 232).
 template <class T> class DiskLight {
     static_assert(detail::is_real_type<T>(), "apse: DiskLight<T>: T must be float or double");
 
@@ -141,8 +147,11 @@ public:
         return visit([](const auto& m) { return m.empty(); });
     }
 
-    /// True if the samples are cosine-weighted (built with a valid receiver normal).
-    APSE_FUNC bool cosine_weighted() const noexcept { return cosine_; }
+    /// True if the samples are cosine-weighted: built with a receiver normal that is non-zero and
+    /// finite, and not empty() (CosineWeighted::weighted()).
+    APSE_FUNC bool cosine_weighted() const noexcept {
+        return cosine_ && visit([](const auto& m) { return weighted(m); });
+    }
 
     /// The disk's spherical ellipse.
     APSE_FUNC const SphericalEllipse<T>& ellipse() const noexcept {
@@ -183,6 +192,8 @@ public:
     }
 
 private:
+    friend struct detail::DiskLightAccess;
+
     /// The chosen sampler only: plain (the LD-radial map, whose radial() serves
     /// DiskMap::radial; the parallel one; the tabulated LD-radial map, whose radial() serves
     /// DiskMap::tabulated) or cosine-weighted over any of the five maps, built in place; `map_`
@@ -208,6 +219,11 @@ private:
         APSE_FUNC Maps(CosineTag, const TabulatedMap<T>& m, const vec3& n) noexcept : cw_tab(m, n) {}
     };
     static APSE_FUNC TabulationView no_table() noexcept { return TabulationView{nullptr, 0, 0, 0}; }
+    /// Whether a live sampler weights by the cosine: CosineWeighted's own answer, false for a plain map.
+    template <class Map, int Nodes> static APSE_FUNC bool weighted(const CosineWeighted<Map, Nodes>& m) noexcept {
+        return m.weighted();
+    }
+    template <class Map> static APSE_FUNC bool weighted(const Map&) noexcept { return false; }
     static APSE_NOINLINE APSE_FUNC Maps make_maps(DiskMap map, const SphericalEllipse<T>& e, const TabulationView& table) noexcept {
         if (map == DiskMap::parallel) return Maps(ParallelMap<T>(e));
         if (is_tabulated(map)) return Maps(TabulatedLdRadialMap<T>(e, table));
@@ -291,6 +307,21 @@ APSE_FUNC DiskLightSample<T> sample_disk_light(const glm::vec<3, T>& o, const gl
     return DiskLight<T>(o, center, normal, radius, map, table, receiver_normal).sample(u);
 }
 
+namespace detail {
+
+/// DiskLight's constructor from the projected ellipse, for disk_light_pdf (which has projected
+/// the disk already, to test the direction).
+struct DiskLightAccess {
+    template <class T>
+    static APSE_FUNC DiskLight<T> cosine_light(const glm::vec<3, T>& o, const glm::vec<3, T>& center,
+                                               const glm::vec<3, T>& normal, DiskMap map, const SphericalEllipse<T>& e,
+                                               const TabulationView& table, const glm::vec<3, T>& receiver_normal) noexcept {
+        return DiskLight<T>(o, center, normal, map, e, table, receiver_normal);
+    }
+};
+
+}  // namespace detail
+
 /// Density in solid angle with which the **exact** maps (DiskMap radial, ld_radial, parallel)
 /// sample the direction w from o: 1/Omega of the disk's spherical ellipse if the ray o + t w
 /// (t > 0) hits the disk, else 0 (also for degenerate input). One projection and one R_J. Not
@@ -326,15 +357,16 @@ APSE_FUNC T disk_light_pdf(const glm::vec<3, T>& o, const glm::vec<3, T>& center
 
 /// Density in solid angle with which the cosine-weighted
 /// DiskLight(o, center, normal, radius, map, table, receiver_normal) samples w (exactly its
-/// pdf(w)), stateless. Cost: the projection; for directions that hit the disk, the whole
-/// cosine-weighted set-up (its marginal nodes) — a renderer that queries many
+/// pdf(w)), stateless. Cost: the projection; for directions that hit the disk, the map's and
+/// the cosine weighting's set-up (its marginal nodes) — a renderer that queries many
 /// directions at one shading point should keep the DiskLight instead.
 template <class T>
 APSE_FUNC T disk_light_pdf(const glm::vec<3, T>& o, const glm::vec<3, T>& center, const glm::vec<3, T>& normal,
                            detail::type_identity_t<T> radius, DiskMap map, const TabulationView& table,
                            const glm::vec<3, T>& receiver_normal, const glm::vec<3, T>& w) noexcept {
-    if (!project_disk(o, center, normal, radius).contains(w)) return T(0);
-    return DiskLight<T>(o, center, normal, radius, map, table, receiver_normal).pdf(w);
+    const SphericalEllipse<T> e = project_disk(o, center, normal, radius);
+    if (!e.contains(w)) return T(0);
+    return detail::DiskLightAccess::cosine_light(o, center, normal, map, e, table, receiver_normal).pdf(w);
 }
 
 }  // namespace apse
