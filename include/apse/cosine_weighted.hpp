@@ -14,7 +14,8 @@
 ///   square (maps/tabulated_cosine.hpp) that reuses the map's sample — a piecewise-linear
 ///   marginal over its azimuth coordinate and a model of the cosine along each ray whose root is
 ///   the horizon's exact crossing;
-/// * the exact maps, and the tabulated maps with the centre on or below the horizon: the exact
+/// * the exact maps, and the tabulated maps with the centre on, below or within 1e-3 (of the
+///   normal's largest component) above the horizon: the exact
 ///   projected-solid-angle sampler of the map's ellipse (ProjectedSolidAngleSampler,
 ///   projected_solid_angle.hpp), which needs only the ellipse.
 /// For the LD-radial maps the Shirley–Chiu concentric map comes first (u → (turns, radius^2) →

@@ -21,7 +21,8 @@
 /// horizon, so no sample falls below it. The conditional density of u2 is c~ / M (M = ∫ c~ du2,
 /// a polynomial in r), drawn by Halley's steps on that quartic polynomial. The azimuth is
 /// drawn from a density in u1 that is linear between Nodes azimuths (at equal steps of the map's
-/// Lambert anomaly) through M there. The density reported is the map's density times the warp's,
+/// Lambert anomaly) through M there (plus a floor of 1e-3 of the largest, build()). The
+/// density reported is the map's density times the warp's,
 ///     pdf(ω) = pdf_map(ω) m(u1) / (∫ m) · c~(r) / M(u1),
 /// exactly the density of the samples; the model decides the variance only.
 ///
@@ -106,9 +107,9 @@ template <class T> APSE_HOT_INLINE T cosine_ray_step(const CosineRay<T>& ray, T 
 }
 
 /// The r in [0, ray.end] with G(r) = u mass (u in [0, 1]; root_u = sqrt(u)): two of Halley's
-/// steps from end sqrt(u) (exact when G ∝ r^2), which nearly always land within the tolerance
-/// (measured over the benchmark's lights: 2.2 steps per sample in double, 1.x in float), then
-/// more steps safeguarded by the bracket until they do.
+/// steps from end sqrt(u) (exact when G ∝ r^2), which land within the tolerance (2 eps of the
+/// mass) for 76 % of the samples in double and 96 % in float (measured over the benchmark's
+/// lights), then steps safeguarded by the bracket (at most 32) until they do.
 template <class T> APSE_HOT_INLINE T cosine_ray_root(const CosineRay<T>& ray, T u, T root_u) noexcept {
     const T target = u * ray.mass, tolerance = T(2) * epsilon<T>() * ray.mass;
     T r = ray.end * root_u;
