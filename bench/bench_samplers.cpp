@@ -38,23 +38,12 @@
 
 #include "support/context.hpp"
 
-#include <memory>
 #include <string>
 
 namespace {
 
 using apse_bench::DiskConfig;
 using apse_bench::DiskConfigs;
-
-/// The tabulation table, built once, outside any timing loop (main() builds it first).
-const apse::TabulationTable& table() {
-    static const std::unique_ptr<apse::TabulationTable> t = [] {
-        auto p = std::make_unique<apse::TabulationTable>();
-        p->build();
-        return p;
-    }();
-    return *t;
-}
 
 // Sampler factories: make(disk, table view) builds the sampler for one shading point.
 struct Area {  // the reference: the light's frame stored with the light (DiskConfig::frame)
@@ -159,7 +148,7 @@ constexpr char cosine_tabulated_ld_radial_32[] = "cosine_tabulated_ld_radial_32_
 /// result kept observable (cost breakdown).
 template <class Factory, class T> void bm_setup(benchmark::State& state) {
     const DiskConfigs<T>& s = apse_bench::disk_configs<T>();
-    const apse::TabulationView view = table().view();
+    const apse::TabulationView view = apse::default_table().view();
     std::size_t i = 0;
     for (auto _ : state) {
         const auto& disk = s.disks[i++ & (DiskConfigs<T>::disk_count - 1)];
@@ -171,7 +160,7 @@ template <class Factory, class T> void bm_setup(benchmark::State& state) {
 /// One fresh shading point per benchmark iteration: build the sampler, draw `Samples` samples.
 template <class Factory, class T, int Samples> void bm_sampler(benchmark::State& state) {
     const DiskConfigs<T>& s = apse_bench::disk_configs<T>();
-    const apse::TabulationView view = table().view();
+    const apse::TabulationView view = apse::default_table().view();
     using Sampler = decltype(Factory::make(s.disks[0], view));
     std::size_t i = 0, k = 0;
     long iterations = 0, accepted = 0;
@@ -219,7 +208,7 @@ int main(int argc, char** argv) {
     if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
     apse_bench::add_context();
     // Everything shared is built before any timing.
-    (void)table();
+    (void)apse::default_table();
     (void)apse_bench::disk_configs<float>();
     (void)apse_bench::disk_configs<double>();
 

@@ -14,7 +14,6 @@
 #include <catch2/catch.hpp>
 
 #include <cstdio>
-#include <memory>
 #include <string>
 
 namespace {
@@ -26,15 +25,6 @@ template <class T> using Vec3 = glm::vec<3, T>;
 /// grazing.
 const double kDisks[][2] = {{1.0, 0.0}, {0.7, 1.3}, {0.25, 2.5}};
 
-const apse::TabulationTable& table() {
-    static const std::unique_ptr<apse::TabulationTable> t = [] {
-        auto p = std::make_unique<apse::TabulationTable>();
-        p->build();
-        return p;
-    }();
-    return *t;
-}
-
 /// Calls f(name, sampler, is_rejection) for every sampler of the unit disk (h, 0, d) seen from
 /// the origin, whose spherical ellipse is e.
 template <class T, class F>
@@ -43,8 +33,8 @@ void for_each_sampler(const apse::SphericalEllipse<T>& e, double d, double h, F&
     f(std::string("radial"), apse::RadialMap<T>(e), false);
     f(std::string("ld_radial"), apse::LdRadialMap<T>(e), false);
     f(std::string("parallel"), apse::ParallelMap<T>(e), false);
-    f(std::string("tabulated"), apse::TabulatedMap<T>(e, table().view()), false);
-    f(std::string("tabulated_ld_radial"), apse::TabulatedLdRadialMap<T>(e, table().view()), false);
+    f(std::string("tabulated"), apse::TabulatedMap<T>(e, apse::default_table().view()), false);
+    f(std::string("tabulated_ld_radial"), apse::TabulatedLdRadialMap<T>(e, apse::default_table().view()), false);
     f(std::string("gamito_single_shot"), apse::GamitoSingleShot<T>(o, c, n, T(1)), true);
     f(std::string("gamito_retry"), apse::GamitoRetry<T>(o, c, n, T(1)), true);
 }
