@@ -179,14 +179,11 @@ APSE_BM(boostnp_comp_ellint_pi, comp_pi, boost::math::ellint_3(std::sqrt(y), x, 
 }  // namespace
 
 int main(int argc, char** argv) {
-    benchmark::Initialize(&argc, argv);
-    if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
-    apse_bench::add_context();
+    if (!apse_bench::initialize(argc, argv)) return 1;
 #if defined(APSE_BENCH_HAVE_BOOST)
     benchmark::AddCustomContext("boost_version", std::to_string(BOOST_VERSION / 100000) + "." +
                                                      std::to_string(BOOST_VERSION / 100 % 1000));
 #endif
-    benchmark::RunSpecifiedBenchmarks();
-    benchmark::Shutdown();
+    apse_bench::run();
     return 0;
 }

@@ -16,6 +16,8 @@
 
 #include <benchmark/benchmark.h>
 
+#include "support/context.hpp"
+
 #include <array>
 #include <cmath>
 #include <random>
@@ -98,9 +100,7 @@ template <class T> void register_all(const char* type) {
 int main(int argc, char** argv) {
     register_all<float>("float");
     register_all<double>("double");
-    benchmark::Initialize(&argc, argv);
-    if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
-    benchmark::RunSpecifiedBenchmarks();
-    benchmark::Shutdown();
+    if (!apse_bench::initialize(argc, argv)) return 1;
+    apse_bench::run();
     return 0;
 }

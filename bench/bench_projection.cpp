@@ -22,6 +22,8 @@
 
 #include <benchmark/benchmark.h>
 
+#include "support/context.hpp"
+
 #include <array>
 #include <cmath>
 #include <cstdio>
@@ -190,11 +192,9 @@ template <class T> void register_all(const char* type) {
 int main(int argc, char** argv) {
     register_all<float>("float");
     register_all<double>("double");
-    benchmark::Initialize(&argc, argv);
-    if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
+    if (!apse_bench::initialize(argc, argv)) return 1;
     RatioReporter reporter;
-    benchmark::RunSpecifiedBenchmarks(&reporter);
+    apse_bench::run(&reporter);
     reporter.print_ratios();
-    benchmark::Shutdown();
     return 0;
 }

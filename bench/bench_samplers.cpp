@@ -204,9 +204,7 @@ template <class Factory> void register_setup() {
 }  // namespace
 
 int main(int argc, char** argv) {
-    benchmark::Initialize(&argc, argv);
-    if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
-    apse_bench::add_context();
+    if (!apse_bench::initialize(argc, argv)) return 1;
     // Everything shared is built before any timing.
     (void)apse::default_table();
     (void)apse_bench::disk_configs<float>();
@@ -239,7 +237,6 @@ int main(int argc, char** argv) {
     register_sampler<Cosine<TabulatedLdRadial, cosine_tabulated_ld_radial>>();
     register_sampler<Cosine<TabulatedLdRadial, cosine_tabulated_ld_radial_16, 16>>();
     register_sampler<Cosine<TabulatedLdRadial, cosine_tabulated_ld_radial_32, 32>>();
-    benchmark::RunSpecifiedBenchmarks();
-    benchmark::Shutdown();
+    apse_bench::run();
     return 0;
 }

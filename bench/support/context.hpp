@@ -39,4 +39,21 @@ inline void add_context() {
 #endif
 }
 
+/// The start of every benchmark's main(): parses the command line and records the context
+/// (add_context). False if an argument was not recognised (already reported: main returns 1).
+inline bool initialize(int& argc, char** argv) {
+    benchmark::Initialize(&argc, argv);
+    if (benchmark::ReportUnrecognizedArguments(argc, argv)) return false;
+    add_context();
+    return true;
+}
+
+/// The end of every benchmark's main(): runs the benchmarks the command line selected (shown by
+/// `reporter` when given, else by the default console or JSON reporter) and shuts the library down.
+inline void run(benchmark::BenchmarkReporter* reporter = nullptr) {
+    if (reporter != nullptr) benchmark::RunSpecifiedBenchmarks(reporter);
+    else benchmark::RunSpecifiedBenchmarks();
+    benchmark::Shutdown();
+}
+
 }  // namespace apse_bench
