@@ -30,28 +30,17 @@ cancellation-free Omega_r, Carlson Omega_p) and asserts agreement to 1e-25 relat
 
 import os
 import random
-import struct
+import sys
 
 import mpmath as mp
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from mp_reference import f32, hexf, dec  # noqa: E402
 
 mp.mp.dps = 40
 SEED = 20170619
 OUT = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "tests", "data", "maps")
 PI = mp.pi
-
-
-def f32(x):
-    return struct.unpack("<f", struct.pack("<f", float(x)))[0]
-
-
-def hexf(x):
-    x = float(x)
-    assert f32(x) == x, x
-    return x.hex()
-
-
-def dec(x):
-    return mp.nstr(mp.mpf(x), 30, min_fixed=1, max_fixed=0)
 
 
 class Ellipse:

@@ -42,10 +42,12 @@ kappa_omega, kappa_frame (absolute sensitivity of ze).
 import math
 import os
 import random
-import struct
 import sys
 
 import mpmath as mp
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from mp_reference import f32, hexf, dec, mvec, dot, cross, sub, add, scale, norm  # noqa: E402
 
 mp.mp.dps = 60
 SEED = 20170619
@@ -55,49 +57,6 @@ OUT = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "tests", "d
 # ------------------------------------------------------------------------------------------------
 # helpers
 # ------------------------------------------------------------------------------------------------
-
-
-def f32(x):
-    """Round a Python float to the nearest float32 (returned as a Python float, exact)."""
-    return struct.unpack("<f", struct.pack("<f", float(x)))[0]
-
-
-def hexf(x):
-    x = float(x)
-    assert f32(x) == x, x
-    return x.hex()
-
-
-def dec(x):
-    return mp.nstr(mp.mpf(x), 30, min_fixed=1, max_fixed=0)
-
-
-def mvec(v):
-    return [mp.mpf(t) for t in v]
-
-
-def dot(a, b):
-    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
-
-
-def cross(a, b):
-    return [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]]
-
-
-def sub(a, b):
-    return [a[i] - b[i] for i in range(3)]
-
-
-def add(a, b):
-    return [a[i] + b[i] for i in range(3)]
-
-
-def scale(a, s):
-    return [t * s for t in a]
-
-
-def norm(a):
-    return mp.sqrt(dot(a, a))
 
 
 def normalize(a):
@@ -867,7 +826,6 @@ def build_solid_angles(rng):
         assert rel(q, e.omega) < mp.mpf(10) ** -25, (ta, tb, q, e.omega)
         rows.append([name, hexf(ta), hexf(tb), dec(e.omega)])
     return ["case", "tan_alpha", "tan_beta", "omega"], rows
-
 
 
 def render(header, rows, comment):
