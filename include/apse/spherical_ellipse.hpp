@@ -174,6 +174,10 @@ template <class T> struct SphericalEllipse {
     /// empty ellipse return pdf 0 ("no sample").
     APSE_FUNC bool empty() const noexcept { return !(tan_beta > T(0)); }
 
+    /// True for a spherical cap: a non-empty ellipse whose two semi-axes are exactly equal
+    /// (tan_alpha == tan_beta), as project_sphere gives. The maps sample caps by closed forms.
+    APSE_FUNC bool is_cap() const noexcept { return tan_beta == tan_alpha && !empty(); }
+
     /// Solid angle (steradians) of the ellipse, docs/math.md §3, by the cancellation-free form
     /// Omega = (4/3) tan(alpha) tan(beta) R_J(0, 1 + tan^2 beta, 1 + tan^2 alpha, 1)
     ///       = (4/3) sin(alpha) cos(alpha) sin(beta) cos(beta) sqrt(P) R_J(0, cos^2 alpha, cos^2 beta, P),
