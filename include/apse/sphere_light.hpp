@@ -1,0 +1,167 @@
+// apse — area-preserving parameterizations for spherical ellipses.
+// SPDX-License-Identifier: MIT
+#pragma once
+
+/// @file sphere_light.hpp
+/// A sphere light in one call: the cap the sphere subtends at a shading point (project_sphere,
+/// docs/math.md §2b), sampled with the sampler of your choice — any map, or CosineWeighted<map>
+/// for directions ∝ the receiver's clamped cosine — with the direction, the point of the sphere
+/// it reaches, its distance (the shadow ray) and the pdf in solid angle; plus the pdf of any
+/// direction for MIS, from the light or statelessly (sphere_light_pdf).
+///
+///     // per shading point o, for each of n stratified points u:
+///     apse::SphereLight<apse::LdRadialMap<float>> light(o, center, radius);
+///     auto s = light.sample(u);              // s.pdf == 0: no sample (skip it)
+///     if (s.pdf > 0 && visible(o, s.point)) L += Le * f(s.direction) / s.pdf;
+///     float p_light = light.pdf(w);          // MIS: the density of a BSDF-sampled direction w
+///     // cosine-weighted for the receiver normal n_r: exactly ∝ max(0, n_r·ω) on the cap
+///     apse::SphereLight<apse::CosineWeighted<apse::LdRadialMap<float>>> lit(o, center, radius, n_r);
+///     // tabulated maps take the table: SphereLight<TabulatedLdRadialMap<float>>(o, center, radius, table)
+///
+/// Every map samples a cap by closed forms (no elliptic integral, no table look-up), so the
+/// choice of map only decides how the square is distorted; the cosine-weighted samplers draw
+/// exactly ∝ max(0, n_r·ω) over the cap (ProjectedCapSampler).
+
+#include <cmath>
+
+#include "config.hpp"
+#include "math.hpp"
+#include "projection.hpp"
+#include "sample.hpp"
+#include "spherical_ellipse.hpp"
+#include "detail/glm.hpp"
+#include "detail/type_identity.hpp"
+#include "detail/vector.hpp"
+
+namespace apse {
+
+namespace detail {
+
+/// Distance t > 0 along the unit direction w from o to the nearest point of the sphere of
+/// radius r (inv_r = 1/r) whose centre is at p from o, |p| = dist > r (given), for a direction
+/// inside the cap the sphere subtends: the root of t² − 2 b t + (dist − r)(dist + r) = 0
+/// nearer to o (b = w·p), in the form t = (dist − r) ((dist + r) / (b + sqrt(disc))) that does
+/// not cancel when o is close to the surface (t ≪ dist). The discriminant disc = r² − |q|², q =
+/// p − b w the perpendicular offset, is taken as r sqrt((1 − s)(1 + s)), s = |q / r| (b² − |p|² + r²
+/// would cancel for far spheres; q / r keeps the squares in range at any scale), and as 0 for
+/// directions that rounding puts just outside the cap (the tangent point). Returns 0 when w
+/// points away from the sphere (b <= 0) or the result is not finite.
+template <class T>
+APSE_FUNC T sphere_hit_distance(const glm::vec<3, T>& p, T r, T inv_r, T dist, const glm::vec<3, T>& w) noexcept {
+    const T b = glm::dot(w, p);
+    if (!(b > T(0))) return T(0);
+    const glm::vec<3, T> q = (p - b * w) * inv_r;
+    const T s = std::sqrt(glm::dot(q, q));
+    const T root = s < T(1) ? r * std::sqrt((T(1) - s) * (T(1) + s)) : T(0);
+    const T t = (dist - r) * ((dist + r) / (b + root));
+    return t > T(0) && is_finite(t) ? t : T(0);
+}
+
+/// |v| without overflow or underflow of the squares (v scaled by its largest component); 0 for
+/// a zero vector, NaN for a NaN one.
+template <class T> APSE_FUNC T robust_length(const glm::vec<3, T>& v) noexcept {
+    const T m = max_abs3(v);
+    if (!(m > T(0))) return m;
+    const glm::vec<3, T> s = v * (T(1) / m);
+    return m * std::sqrt(glm::dot(s, s));
+}
+
+}  // namespace detail
+
+/// A sphere light (centre, radius) seen from one shading point o, ready to sample with
+/// `Sampler`: any map (RadialMap, LdRadialMap, ParallelMap, TabulatedMap, TabulatedLdRadialMap
+/// of T) or CosineWeighted over one. The set-up — project_sphere and the sampler's own set-up —
+/// is done once in the constructor; sample() as often as needed. Holds the shading point, the
+/// centre, the radius and the sampler only (no size paid for samplers not used); trivially
+/// copyable when the sampler is (the tabulated maps hold a pointer into their table, which must
+/// outlive the light).
+///
+/// Defined behaviour on every input: a shading point inside or on the sphere (which sees the
+/// emitter in every direction, not a cap), a zero, negative or NaN radius, NaN or infinite
+/// coordinates give an empty light (every sample and pdf 0; never NaN). A zero or non-finite
+/// receiver normal gives CosineWeighted's documented plain sampling (cosine_weighted() false).
+template <class Sampler> class SphereLight {
+public:
+    using vec3 = typename Sampler::vec3;      ///< a 3-D vector (direction, point or normal)
+    using vec2 = typename Sampler::vec2;      ///< a point of the unit square
+    using T = typename vec3::value_type;      ///< float or double
+
+    /// The light (center, radius) seen from o, sampled with `Sampler` built from the sphere's
+    /// cap and `sampler_args`: nothing for the exact maps; the TabulationView for the tabulated
+    /// maps; the receiver normal (after the table, for the tabulated maps) for CosineWeighted.
+    template <class... SamplerArgs>
+    APSE_FUNC SphereLight(const vec3& o, const vec3& center, detail::type_identity_t<T> radius,
+                          const SamplerArgs&... sampler_args) noexcept
+        : o_(o), center_(center), radius_(radius), inv_radius_(T(1) / radius),
+          dist_(detail::robust_length(center - o)),
+          sampler_(project_sphere(o, center, radius), sampler_args...) {}
+
+    /// True if the light cannot be sampled (o inside or on the sphere, invalid input;
+    /// cosine-weighted: also the cap entirely below the receiver's horizon): every sample and
+    /// pdf is then 0.
+    APSE_FUNC bool empty() const noexcept { return sampler_.empty(); }
+
+    /// The cap the sphere subtends at o (empty for invalid input).
+    APSE_FUNC const SphericalEllipse<T>& ellipse() const noexcept { return sampler_.ellipse(); }
+
+    /// Solid angle of the sphere seen from o: 2 pi (1 − cos alpha), sin alpha = radius / distance
+    /// (steradians; 0 when empty), from the cap's stored 1 − cos alpha (no cancellation for far
+    /// spheres).
+    APSE_FUNC T solid_angle() const noexcept {
+        return ellipse().empty() ? T(0) : two_pi_v<T> * ellipse().one_minus_cos_alpha;
+    }
+
+    /// The sampler (its own documentation says what its pdf is).
+    APSE_FUNC const Sampler& sampler() const noexcept { return sampler_; }
+
+    /// Sample for the point u of the unit square (clamped into [0, 1]^2; NaN → pdf 0): the
+    /// direction, the nearest point of the sphere along it (detail::sphere_hit_distance), its
+    /// distance and the sampler's pdf (solid angle). pdf 0 ("no sample", point o, distance 0,
+    /// the direction finite) for an empty light, a NaN u, or a hit point that overflows T.
+    APSE_FUNC PointSample<T> sample(const vec2& u) const noexcept {
+        const DirectionSample<T> s = sampler_.sample(u);
+        PointSample<T> r{{s.direction, T(0)}, o_, T(0)};
+        if (!(s.pdf > T(0))) return r;
+        const T t = detail::sphere_hit_distance(center_ - o_, radius_, inv_radius_, dist_, s.direction);
+        const vec3 p = o_ + t * s.direction;
+        if (!(t > T(0)) || !detail::is_finite(p.x + p.y + p.z)) return r;
+        r.pdf = s.pdf;
+        r.point = p;
+        r.distance = t;
+        return r;
+    }
+
+    /// Density of sample() at the world-space direction `w` (any non-zero length), in solid
+    /// angle: the sampler's pdf (0 outside the cap, i.e. for rays that miss the sphere).
+    APSE_FUNC T pdf(const vec3& w) const noexcept { return sampler_.pdf(w); }
+
+    /// The point of the unit square whose sample has direction `w` (the sampler's invert).
+    APSE_FUNC vec2 invert(const vec3& w) const noexcept { return sampler_.invert(w); }
+
+private:
+    vec3 o_, center_;
+    T radius_;
+    T inv_radius_;  ///< 1 / radius, for the hit distance
+    T dist_;        ///< |center − o|, for the hit distance
+    Sampler sampler_;
+};
+
+/// Density in solid angle with which SphereLight<Sampler>(o, center, radius, sampler_args...)
+/// samples the direction w (any non-zero length) — exactly its pdf(w) — stateless, for the MIS
+/// weight of a BSDF-sampled direction. Cost: project_sphere and the cap test; for directions
+/// that hit the sphere, the sampler's set-up (closed forms for every map on a cap). 0 for rays
+/// that miss the sphere and for invalid input.
+///
+///     float p = apse::sphere_light_pdf<apse::LdRadialMap<float>>(o, center, radius, w);
+template <class Sampler, class... SamplerArgs>
+APSE_FUNC typename Sampler::vec3::value_type
+sphere_light_pdf(const typename Sampler::vec3& o, const typename Sampler::vec3& center,
+                 detail::type_identity_t<typename Sampler::vec3::value_type> radius,
+                 const typename Sampler::vec3& w, const SamplerArgs&... sampler_args) noexcept {
+    using T = typename Sampler::vec3::value_type;
+    const SphericalEllipse<T> cap = project_sphere(o, center, radius);
+    if (!cap.contains(w)) return T(0);
+    return Sampler(cap, sampler_args...).pdf(w);
+}
+
+}  // namespace apse

@@ -1,0 +1,277 @@
+// sphere_light.hpp: the one-call sphere-light sampler over every map — points on the sphere,
+// shadow-ray distances against a long-double reference, pdf(direction) and the stateless MIS pdf
+// equal to the sampler's own density, an unbiased irradiance estimate against the closed form,
+// sizes, mixed scalar arguments and bad input.
+#include <apse/sphere_light.hpp>
+#include <apse/maps/ld_radial.hpp>
+#include <apse/maps/parallel.hpp>
+#include <apse/maps/radial.hpp>
+#include <apse/maps/tabulated.hpp>
+
+#include "support/default_table.hpp"
+#include "support/map_testing.hpp"
+
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <limits>
+#include <type_traits>
+
+namespace {
+template <class T> using Vec2 = glm::vec<2, T>;
+template <class T> using Vec3 = glm::vec<3, T>;
+
+// Passed to GPU kernels by value: plain data, holding the chosen sampler and the shadow-ray data
+// (shading point, centre, radius, 1/radius, distance) only.
+template <class T> constexpr bool sized_by_its_map() {
+    using Map = apse::TabulatedLdRadialMap<T>;
+    return sizeof(apse::SphereLight<Map>) <= sizeof(Map) + 2 * sizeof(Vec3<T>) + 3 * sizeof(T) + alignof(Map);
+}
+static_assert(std::is_trivially_copyable<apse::SphereLight<apse::LdRadialMap<float>>>::value, "trivially copyable");
+static_assert(std::is_trivially_copyable<apse::SphereLight<apse::TabulatedLdRadialMap<double>>>::value,
+              "trivially copyable");
+static_assert(sized_by_its_map<float>() && sized_by_its_map<double>(), "a sphere light is its map + shadow-ray data");
+
+// The sampler's arguments after the sphere: none for the exact maps, the table for the tabulated.
+template <class Sampler> struct Args {
+    template <class F> static auto apply(F&& f) { return f(); }
+};
+template <class T> struct Args<apse::TabulatedMap<T>> {
+    template <class F> static auto apply(F&& f) { return f(apse_test::default_table().view()); }
+};
+template <class T> struct Args<apse::TabulatedLdRadialMap<T>> {
+    template <class F> static auto apply(F&& f) { return f(apse_test::default_table().view()); }
+};
+
+template <class Sampler, class T = typename Sampler::vec3::value_type>
+apse::SphereLight<Sampler> make_light(const Vec3<T>& o, const Vec3<T>& c, T r) {
+    return Args<Sampler>::apply([&](const auto&... a) { return apse::SphereLight<Sampler>(o, c, r, a...); });
+}
+template <class Sampler, class T = typename Sampler::vec3::value_type>
+T stateless_pdf(const Vec3<T>& o, const Vec3<T>& c, T r, const Vec3<T>& w) {
+    return Args<Sampler>::apply([&](const auto&... a) { return apse::sphere_light_pdf<Sampler>(o, c, r, w, a...); });
+}
+
+/// Half-angle of the cap between the unit direction w and the centre direction, in long double.
+long double angle_from(const glm::dvec3& w, const glm::dvec3& axis) {
+    const glm::dvec3 a = glm::normalize(axis);
+    return std::atan2((long double)glm::length(glm::cross(w, a)), (long double)glm::dot(w, a));
+}
+
+/// Nearest hit distance of the ray o + t w (w unit) on the sphere, in long double from the
+/// quadratic's stable root.
+long double hit_reference(const glm::dvec3& o, const glm::dvec3& c, double r, const glm::dvec3& w) {
+    const long double px = (long double)c.x - o.x, py = (long double)c.y - o.y, pz = (long double)c.z - o.z;
+    const long double wl = std::sqrt((long double)w.x * w.x + (long double)w.y * w.y + (long double)w.z * w.z);
+    const long double wx = w.x / wl, wy = w.y / wl, wz = w.z / wl;
+    const long double b = px * wx + py * wy + pz * wz;
+    const long double qx = px - b * wx, qy = py - b * wy, qz = pz - b * wz;
+    const long double disc = (long double)r * r - (qx * qx + qy * qy + qz * qz);
+    const long double d2 = px * px + py * py + pz * pz;
+    return (d2 - (long double)r * r) / (b + std::sqrt(std::max(disc, 0.0L)));
+}
+
+/// Every sample of `light`: a unit direction inside the cap, its nearest point on the sphere at
+/// the reference distance, pdf(direction) and the stateless pdf equal to the sample's pdf.
+template <class Sampler, class T>
+void check_points(const Vec3<T>& o, const Vec3<T>& c, T r, int n, apse_test::Rng& rng) {
+    const apse::SphereLight<Sampler> light = make_light<Sampler>(o, c, r);
+    REQUIRE_FALSE(light.empty());
+    const glm::dvec3 od(o), cd(c);
+    const double dist = glm::length(cd - od), eps = double(apse::epsilon<T>());
+    const long double alpha = std::asin((long double)r / dist);
+    // Distance: T's rounding of o, c and the direction is amplified near the surface by
+    // dist / (dist - r) (the hit distance is ~dist - r there); 64 eps of that covers every
+    // operation of the computation.
+    const double tol_t = 64 * eps * (1 + dist / (dist - r));
+    int rim_misses = 0;
+    for (int i = 0; i < n; ++i) {
+        const Vec2<T> u(rng.uniform<T>(), rng.uniform<T>());
+        const auto s = light.sample(u);
+        INFO("u = (" << u.x << ", " << u.y << "), dist/r = " << dist / r);
+        REQUIRE(s.pdf > T(0));
+        const glm::dvec3 w(s.direction);
+        CHECK(std::fabs(glm::length(w) - 1) <= 8 * eps);
+        // inside the cap, to rounding of the direction (a few eps in angle)
+        CHECK(angle_from(w, cd - od) <= alpha * (1 + 16 * eps) + 16 * eps);
+        const long double t_ref = hit_reference(od, cd, double(r), w);
+        CHECK(std::fabs(s.distance - t_ref) <= tol_t * t_ref);
+        // the point is o + t w, on the sphere, on the side facing o
+        const glm::dvec3 p(s.point);
+        CHECK(glm::length(p - (od + double(s.distance) * w)) <= 16 * eps * (glm::length(od) + s.distance));
+        CHECK(std::fabs(glm::length(p - cd) - r) <= 64 * eps * (r + glm::length(cd) + dist));
+        CHECK(glm::dot(p - cd, w) <= 64 * eps * (r + glm::length(cd) + dist));
+        // the density of that direction: the sample's own (0 only on the rim, from rounding)
+        const T p_light = light.pdf(s.direction);
+        if (p_light == T(0)) {
+            ++rim_misses;
+            CHECK(angle_from(w, cd - od) >= alpha * (1 - 64 * eps) - 64 * eps);
+        } else {
+            CHECK(p_light == s.pdf);
+        }
+        CHECK(stateless_pdf<Sampler>(o, c, r, s.direction) == p_light);
+    }
+    CHECK(rim_misses <= n / 100);
+}
+
+template <class T> struct Sphere {
+    Vec3<T> o, c;
+    T r;
+};
+/// Shading points from 1.0001 radii (the surface) to 1e4 radii (float) / 1e6 (double), in
+/// general positions.
+template <class T> std::vector<Sphere<T>> spheres() {
+    const Vec3<T> c(T(0.4), T(-1.2), T(2.5));
+    const T r = T(0.7);
+    const glm::dvec3 dir = glm::normalize(glm::dvec3(0.3, 0.8, -0.52));
+    std::vector<Sphere<T>> out;
+    for (double k : {1.0001, 1.05, 2.0, 50.0, 1e4, sizeof(T) == 8 ? 1e6 : 3e4})
+        out.push_back({Vec3<T>(glm::dvec3(c) + k * double(r) * dir), c, r});
+    return out;
+}
+
+template <class T, class... Maps> void check_every_map(int n) {
+    apse_test::Rng rng(25);
+    for (const Sphere<T>& s : spheres<T>()) (check_points<Maps>(s.o, s.c, s.r, n, rng), ...);
+}
+}  // namespace
+
+TEMPLATE_TEST_CASE("sphere light: points on the sphere, distances, pdf and the stateless pdf", "[sphere_light]", float,
+                   double) {
+    using T = TestType;
+    check_every_map<T, apse::RadialMap<T>, apse::LdRadialMap<T>, apse::ParallelMap<T>, apse::TabulatedMap<T>,
+                    apse::TabulatedLdRadialMap<T>>(200);
+}
+
+TEMPLATE_TEST_CASE("sphere light: solid angle and the stateless pdf of misses", "[sphere_light]", float, double) {
+    using T = TestType;
+    for (const Sphere<T>& s : spheres<T>()) {
+        const apse::SphereLight<apse::LdRadialMap<T>> light(s.o, s.c, s.r);
+        const double dist = glm::length(glm::dvec3(s.c) - glm::dvec3(s.o));
+        // 2 pi (1 - cos alpha) = 2 pi (1 - sqrt(1 - (r/dist)^2)), in the cancellation-free long
+        // double form; the cap's own rounding: a few eps relative, amplified near the surface
+        // (alpha's rounding from dist - r).
+        const long double s2 = (long double)s.r * s.r / ((long double)dist * dist);
+        const long double omega = apse_test::kTwoPi * s2 / (1 + std::sqrt(1 - s2));
+        const double eps = double(apse::epsilon<T>());
+        CHECK(std::fabs(light.solid_angle() - omega) <= 16 * eps * (1 + dist / (dist - s.r)) * omega);
+        // directions away from the sphere and just outside its cap miss it
+        const glm::dvec3 axis = glm::normalize(glm::dvec3(s.c) - glm::dvec3(s.o));
+        const glm::dvec3 side = glm::normalize(glm::cross(axis, glm::dvec3(0, 0, 1)));
+        const double alpha = std::asin(double(s.r) / dist);
+        for (double k : {1.01, 1.5, 3.0}) {
+            const double a = std::min(alpha * k, 3.0);
+            const Vec3<T> w(std::cos(a) * axis + std::sin(a) * side);
+            CHECK(light.pdf(w) == T(0));
+            CHECK(apse::sphere_light_pdf<apse::LdRadialMap<T>>(s.o, s.c, s.r, w) == T(0));
+        }
+        CHECK(light.pdf(Vec3<T>(-axis)) == T(0));
+    }
+}
+
+TEMPLATE_TEST_CASE("sphere light: irradiance estimate against the closed form", "[sphere_light][mc]", float, double) {
+    using T = TestType;
+    // Unoccluded irradiance from a uniform sphere (radiance 1) whose cap is above the receiver's
+    // horizon: E = pi sin^2 alpha cos gamma (gamma the centre's angle from the normal), the
+    // exact view-factor formula. The estimate cos / pdf over 4096 independent samples must lie
+    // within 5 standard errors (estimated from the same samples) plus float's rounding of E.
+    const Vec3<T> c(T(1), T(2), T(-0.5));
+    const T r = T(0.5);
+    apse_test::Rng rng(2017);
+    for (double k : {1.2, 3.0, 20.0}) {
+        const glm::dvec3 dir = glm::normalize(glm::dvec3(-0.2, 0.5, 0.9));
+        const Vec3<T> o(glm::dvec3(c) + k * double(r) * dir);
+        const double gamma = 0.6 * (1.5707963267948966 - std::asin(1 / k));  // cap above the horizon
+        const glm::dvec3 side = glm::normalize(glm::cross(dir, glm::dvec3(1, 0, 0)));
+        const glm::dvec3 n = std::cos(gamma) * (-dir) + std::sin(gamma) * side;
+        const double e_ref = 3.141592653589793 / (k * k) * std::cos(gamma);
+        auto run = [&](const auto& light) {
+            const int count = 4096;
+            double sum = 0, sum2 = 0;
+            for (int i = 0; i < count; ++i) {
+                const auto s = light.sample(Vec2<T>(rng.uniform<T>(), rng.uniform<T>()));
+                REQUIRE(s.pdf > T(0));
+                const double f = std::max(0.0, glm::dot(n, glm::dvec3(s.direction))) / double(s.pdf);
+                sum += f;
+                sum2 += f * f;
+            }
+            const double mean = sum / count, se = std::sqrt(std::max(sum2 / count - mean * mean, 0.0) / count);
+            INFO("k = " << k << ", E = " << mean << " +- " << se << ", reference " << e_ref);
+            CHECK(std::fabs(mean - e_ref) <= 5 * se + 1e-5 * e_ref);
+        };
+        run(apse::SphereLight<apse::LdRadialMap<T>>(o, c, r));
+        run(apse::SphereLight<apse::ParallelMap<T>>(o, c, r));
+        run(apse::SphereLight<apse::TabulatedLdRadialMap<T>>(o, c, r, apse_test::default_table().view()));
+    }
+}
+
+TEST_CASE("sphere light: mixed scalar arguments", "[sphere_light]") {
+    const glm::vec3 o(0, 0, 0), c(0, 0, 3);
+    const apse::SphereLight<apse::LdRadialMap<float>> a(o, c, 1);    // int radius
+    const apse::SphereLight<apse::LdRadialMap<float>> b(o, c, 1.0);  // double radius
+    CHECK(a.solid_angle() == b.solid_angle());
+    CHECK(apse::sphere_light_pdf<apse::LdRadialMap<float>>(o, c, 1.0, glm::vec3(0, 0, 1)) == a.pdf(glm::vec3(0, 0, 1)));
+}
+
+TEMPLATE_TEST_CASE("sphere light: bad input gives an empty light, never NaN", "[sphere_light][robust]", float, double) {
+    using T = TestType;
+    const T inf = std::numeric_limits<T>::infinity(), nan = std::numeric_limits<T>::quiet_NaN();
+    const Vec3<T> c(T(1), T(2), T(3));
+    struct Case {
+        Vec3<T> o, c;
+        T r;
+        const char* what;
+    };
+    const Case cases[] = {
+        {c, c, T(1), "o at the centre"},
+        {c + Vec3<T>(T(0.5), T(0), T(0)), c, T(1), "o inside"},
+        {c + Vec3<T>(T(0), T(2), T(0)), c, T(2), "o on the surface"},
+        {Vec3<T>(T(0)), c, T(0), "zero radius"},
+        {Vec3<T>(T(0)), c, T(-1), "negative radius"},
+        {Vec3<T>(T(0)), c, nan, "NaN radius"},
+        {Vec3<T>(T(0)), c, inf, "infinite radius"},
+        {Vec3<T>(nan, T(0), T(0)), c, T(1), "NaN shading point"},
+        {Vec3<T>(T(0)), Vec3<T>(inf, T(0), T(0)), T(1), "infinite centre"},
+    };
+    for (const Case& k : cases) {
+        INFO(k.what);
+        auto check = [&](const auto& light) {
+            CHECK(light.empty());
+            CHECK(light.solid_angle() == T(0));
+            for (const Vec2<T> u : {Vec2<T>(T(0.3), T(0.6)), Vec2<T>(T(0), T(1)), Vec2<T>(nan, T(0.5))}) {
+                const auto s = light.sample(u);
+                CHECK(s.pdf == T(0));
+                CHECK(s.distance == T(0));
+                CHECK(std::isfinite(double(s.direction.x + s.direction.y + s.direction.z)));
+            }
+            CHECK(light.pdf(Vec3<T>(T(0), T(0), T(1))) == T(0));
+            const Vec2<T> v = light.invert(Vec3<T>(T(0), T(0), T(1)));
+            CHECK((std::isfinite(double(v.x)) && std::isfinite(double(v.y))));
+        };
+        check(apse::SphereLight<apse::LdRadialMap<T>>(k.o, k.c, k.r));
+        check(apse::SphereLight<apse::ParallelMap<T>>(k.o, k.c, k.r));
+        check(apse::SphereLight<apse::TabulatedLdRadialMap<T>>(k.o, k.c, k.r, apse_test::default_table().view()));
+        CHECK(apse::sphere_light_pdf<apse::LdRadialMap<T>>(k.o, k.c, k.r, Vec3<T>(T(0), T(0), T(1))) == T(0));
+    }
+    // a NaN u on a valid light: no sample
+    const apse::SphereLight<apse::LdRadialMap<T>> light(Vec3<T>(T(0)), c, T(1));
+    CHECK(light.sample(Vec2<T>(nan, T(0.5))).pdf == T(0));
+    CHECK(light.sample(Vec2<T>(nan, T(0.5))).distance == T(0));
+}
+
+TEMPLATE_TEST_CASE("sphere light: far and near spheres at the range limits", "[sphere_light][robust]", float, double) {
+    using T = TestType;
+    // Coordinates near T's largest and smallest scales: the distance stays finite and accurate
+    // (robust_length and the overflow-free hit distance), relative to the reference.
+    const T big = sizeof(T) == 4 ? T(1e30) : T(1e300), tiny = sizeof(T) == 4 ? T(1e-30) : T(1e-300);
+    for (T scale : {big, tiny}) {
+        const Vec3<T> c(scale * T(0.5), scale * T(-0.25), scale * T(0.75)), o(T(0));
+        const T r = scale * T(0.1);
+        const apse::SphereLight<apse::LdRadialMap<T>> light(o, c, r);
+        REQUIRE_FALSE(light.empty());
+        const auto s = light.sample(Vec2<T>(T(0.3), T(0.7)));
+        REQUIRE(s.pdf > T(0));
+        const long double t_ref = hit_reference(glm::dvec3(o), glm::dvec3(c), double(r), glm::dvec3(s.direction));
+        CHECK(std::fabs(s.distance - t_ref) <= 64 * double(apse::epsilon<T>()) * t_ref);
+    }
+}
