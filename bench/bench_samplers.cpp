@@ -7,6 +7,14 @@
 // the reference measured in the same run, never absolute times. Timing goals live here, never in
 // tests.
 //
+// Sphere lights (tools/bench_table.py's sphere table): the same measurements over 1024 seeded
+// sphere lights (support/sphere_configs.hpp: shading points 1.05–50 radii from the centre), named
+// sphere_<sampler>/<type>/<samples>. Their reference is pbrt-v4's sphere-light sampling (the
+// direction part of Sphere::Sample: the cone the sphere subtends, sampled uniformly in a frame
+// built per shading point, as pbrt does), "sphere_cone"; "sphere_cone_point" adds the point on the
+// sphere and its distance, the reference of the SphereLight rows. The cosine-weighted rows come in
+// two sets of receivers: the cap above the horizon (…_above) and cut by it (…_cut).
+//
 // Cost breakdown (tools/bench_table.py's second table): <sampler>/<type>/0 is the set-up alone
 // (every field of the map kept observable), "projection" is project_disk alone and
 // "projection_solid_angle" project_disk + solid_angle; per sample = (set-up + 16 − set-up + 1)/15.
@@ -23,6 +31,7 @@
 //                  --benchmark_format=json > samplers.json
 //   python3 tools/bench_table.py samplers.json
 #include "support/disk_configs.hpp"
+#include "support/sphere_configs.hpp"
 
 #include <apse/baselines/area.hpp>
 #include <apse/baselines/gamito.hpp>
@@ -33,12 +42,14 @@
 #include <apse/maps/radial.hpp>
 #include <apse/maps/tabulated.hpp>
 #include <apse/projection.hpp>
+#include <apse/sphere_light.hpp>
 
 #include <benchmark/benchmark.h>
 
 #include "support/context.hpp"
 
 #include <string>
+#include <type_traits>
 
 namespace {
 
@@ -144,15 +155,131 @@ constexpr char cosine_tabulated_ld_radial[] = "cosine_tabulated_ld_radial";
 constexpr char cosine_tabulated_ld_radial_16[] = "cosine_tabulated_ld_radial_16_nodes";
 constexpr char cosine_tabulated_ld_radial_32[] = "cosine_tabulated_ld_radial_32_nodes";
 
+// --- sphere lights ---------------------------------------------------------------------------
+using apse_bench::SphereConfig;
+
+/// pbrt-v4's sampling of a sphere light from a point outside it, direction part
+/// (Sphere::Sample(ctx, u) and SampleUniformCone): sin^2 theta_max = r^2 / d^2, cos theta_max
+/// and 1 − cos theta_max (by its Taylor branch below sin^2 = 0.00068523, as pbrt), a frame around
+/// the centre direction built per shading point (Frame::FromZ: Duff et al. 2017's branchless
+/// basis), cos theta = 1 − u0 (1 − cos theta_max), phi = 2 pi u1; pdf 1 / (2 pi (1 − cos theta_max)).
+/// With `Point`, also the nearest point of the sphere along the direction and its distance (the
+/// shadow ray), by the same ray-sphere formula as SphereLight.
+template <class T, bool Point> class ConeSampler {
+public:
+    using vec2 = glm::vec<2, T>;
+    using vec3 = glm::vec<3, T>;
+    ConeSampler(const vec3& o, const vec3& c, T r) : o_(o), c_(c), r_(r) {
+        const vec3 d = c - o;
+        const T dist2 = glm::dot(d, d);
+        dist_ = std::sqrt(dist2);
+        z_ = d / dist_;
+        sin2_max_ = r * r / dist2;
+        const T cos_max = std::sqrt(std::max(T(0), T(1) - sin2_max_));
+        omc_ = sin2_max_ < T(0.00068523) ? sin2_max_ / 2 : T(1) - cos_max;
+        pdf_ = T(1) / (T(2) * apse::pi_v<T> * omc_);
+        const T sign = std::copysign(T(1), z_.z), a = T(-1) / (sign + z_.z), b = z_.x * z_.y * a;
+        x_ = vec3(T(1) + sign * z_.x * z_.x * a, sign * b, -sign * z_.x);
+        y_ = vec3(b, sign + z_.y * z_.y * a, -z_.y);
+    }
+    auto sample(const vec2& u) const {
+        T cos_t = T(1) - u.x * omc_, sin2_t = T(1) - cos_t * cos_t;
+        if (sin2_max_ < T(0.00068523)) {  // pbrt's small-cap branch
+            sin2_t = sin2_max_ * u.x;
+            cos_t = std::sqrt(T(1) - sin2_t);
+        }
+        const T sin_t = std::sqrt(std::max(T(0), sin2_t)), phi = T(2) * apse::pi_v<T> * u.y;
+        const vec3 w = (sin_t * std::cos(phi)) * x_ + (sin_t * std::sin(phi)) * y_ + cos_t * z_;
+        if constexpr (Point) {
+            const T t = apse::detail::sphere_hit_distance(c_ - o_, r_, T(1) / r_, dist_, w);
+            return apse::PointSample<T>{{w, pdf_}, o_ + t * w, t};
+        } else {
+            return apse::DirectionSample<T>{w, pdf_};
+        }
+    }
+
+private:
+    vec3 o_, c_;
+    T r_, dist_;
+    vec3 x_, y_, z_;
+    T sin2_max_, omc_, pdf_;
+};
+
+// Sphere factories: make(sphere, table view) builds the sampler for one shading point.
+struct SphereTag {};
+struct SphereCone : SphereTag {
+    static constexpr const char* name = "sphere_cone";
+    template <class T> static auto make(const SphereConfig<T>& s, const apse::TabulationView&) {
+        return ConeSampler<T, false>(s.o, s.c, s.r);
+    }
+};
+struct SphereConePoint : SphereTag {
+    static constexpr const char* name = "sphere_cone_point";
+    template <class T> static auto make(const SphereConfig<T>& s, const apse::TabulationView&) {
+        return ConeSampler<T, true>(s.o, s.c, s.r);
+    }
+};
+/// project_sphere + Map<T> (the tabulated maps take the table).
+template <template <class> class Map, class T>
+Map<T> sphere_map(const SphereConfig<T>& s, const apse::TabulationView& v) {
+    if constexpr (std::is_constructible<Map<T>, const apse::SphericalEllipse<T>&, const apse::TabulationView&>::value)
+        return Map<T>(apse::project_sphere(s.o, s.c, s.r), v);
+    else
+        return Map<T>(apse::project_sphere(s.o, s.c, s.r));
+}
+template <template <class> class Map, const char* Name> struct SphereMap : SphereTag {
+    static constexpr const char* name = Name;
+    template <class T> static auto make(const SphereConfig<T>& s, const apse::TabulationView& v) {
+        return sphere_map<Map>(s, v);
+    }
+};
+/// CosineWeighted<Map<T>> for the receiver normal of the configuration with the cap cut by the
+/// horizon (Cut) or above it.
+template <template <class> class Map, const char* Name, bool Cut> struct SphereCosine : SphereTag {
+    static constexpr const char* name = Name;
+    template <class T> static auto make(const SphereConfig<T>& s, const apse::TabulationView& v) {
+        return apse::CosineWeighted<Map<T>>(sphere_map<Map>(s, v), Cut ? s.cut : s.above);
+    }
+};
+/// SphereLight<Map<T>>: the direction, the point on the sphere and its distance.
+template <template <class> class Map, const char* Name> struct SphereLightOf : SphereTag {
+    static constexpr const char* name = Name;
+    template <class T> static auto make(const SphereConfig<T>& s, const apse::TabulationView& v) {
+        if constexpr (std::is_constructible<Map<T>, const apse::SphericalEllipse<T>&, const apse::TabulationView&>::value)
+            return apse::SphereLight<Map<T>>(s.o, s.c, s.r, v);
+        else
+            return apse::SphereLight<Map<T>>(s.o, s.c, s.r);
+    }
+};
+constexpr char sphere_radial[] = "sphere_radial";
+constexpr char sphere_ld_radial[] = "sphere_ld_radial";
+constexpr char sphere_parallel[] = "sphere_parallel";
+constexpr char sphere_tabulated[] = "sphere_tabulated";
+constexpr char sphere_tabulated_ld_radial[] = "sphere_tabulated_ld_radial";
+constexpr char sphere_light_ld_radial[] = "sphere_light_ld_radial";
+constexpr char sphere_light_tabulated_ld_radial[] = "sphere_light_tabulated_ld_radial";
+constexpr char sphere_cosine_ld_radial_above[] = "sphere_cosine_ld_radial_above";
+constexpr char sphere_cosine_ld_radial_cut[] = "sphere_cosine_ld_radial_cut";
+constexpr char sphere_cosine_tabulated_ld_radial_above[] = "sphere_cosine_tabulated_ld_radial_above";
+constexpr char sphere_cosine_tabulated_ld_radial_cut[] = "sphere_cosine_tabulated_ld_radial_cut";
+constexpr char sphere_cosine_parallel_above[] = "sphere_cosine_parallel_above";
+constexpr char sphere_cosine_parallel_cut[] = "sphere_cosine_parallel_cut";
+
+/// The configurations a factory samples: the disks, or the spheres for the sphere factories.
+template <class Factory, class T> const auto& configs_of() {
+    if constexpr (std::is_base_of<SphereTag, Factory>::value) return apse_bench::sphere_configs<T>().spheres;
+    else return apse_bench::disk_configs<T>().disks;
+}
+
 /// The set-up alone for one fresh shading point per benchmark iteration, every field of the
 /// result kept observable (cost breakdown).
 template <class Factory, class T> void bm_setup(benchmark::State& state) {
-    const DiskConfigs<T>& s = apse_bench::disk_configs<T>();
+    const auto& lights = configs_of<Factory, T>();
     const apse::TabulationView view = apse::default_table().view();
     std::size_t i = 0;
     for (auto _ : state) {
-        const auto& disk = s.disks[i++ & (DiskConfigs<T>::disk_count - 1)];
-        auto sampler = Factory::make(disk, view);
+        const auto& light = lights[i++ & (lights.size() - 1)];
+        auto sampler = Factory::make(light, view);
         benchmark::DoNotOptimize(sampler);
     }
 }
@@ -160,13 +287,14 @@ template <class Factory, class T> void bm_setup(benchmark::State& state) {
 /// One fresh shading point per benchmark iteration: build the sampler, draw `Samples` samples.
 template <class Factory, class T, int Samples> void bm_sampler(benchmark::State& state) {
     const DiskConfigs<T>& s = apse_bench::disk_configs<T>();
+    const auto& lights = configs_of<Factory, T>();
     const apse::TabulationView view = apse::default_table().view();
-    using Sampler = decltype(Factory::make(s.disks[0], view));
+    using Sampler = decltype(Factory::make(lights[0], view));
     std::size_t i = 0, k = 0;
     long iterations = 0, accepted = 0;
     for (auto _ : state) {
-        const auto& disk = s.disks[i++ & (DiskConfigs<T>::disk_count - 1)];
-        const Sampler sampler = Factory::make(disk, view);
+        const auto& light = lights[i++ & (lights.size() - 1)];
+        const Sampler sampler = Factory::make(light, view);
         T acc = T(0);
         for (int j = 0; j < Samples; ++j) {
             const glm::vec<2, T>& u = s.u[k++ & (DiskConfigs<T>::u_count - 1)];
@@ -209,6 +337,8 @@ int main(int argc, char** argv) {
     (void)apse::default_table();
     (void)apse_bench::disk_configs<float>();
     (void)apse_bench::disk_configs<double>();
+    (void)apse_bench::sphere_configs<float>();
+    (void)apse_bench::sphere_configs<double>();
 
     register_sampler<Area>();  // the reference
     register_sampler<AreaFramePerPoint>();
@@ -237,6 +367,24 @@ int main(int argc, char** argv) {
     register_sampler<Cosine<TabulatedLdRadial, cosine_tabulated_ld_radial>>();
     register_sampler<Cosine<TabulatedLdRadial, cosine_tabulated_ld_radial_16, 16>>();
     register_sampler<Cosine<TabulatedLdRadial, cosine_tabulated_ld_radial_32, 32>>();
+    // sphere lights: the cone reference, every map, SphereLight, cosine-weighted
+    register_sampler<SphereCone>();  // the reference of the sphere table
+    register_sampler<SphereConePoint>();
+    register_sampler<SphereMap<apse::RadialMap, sphere_radial>>();
+    register_sampler<SphereMap<apse::LdRadialMap, sphere_ld_radial>>();
+    register_sampler<SphereMap<apse::ParallelMap, sphere_parallel>>();
+    register_sampler<SphereMap<apse::TabulatedMap, sphere_tabulated>>();
+    register_sampler<SphereMap<apse::TabulatedLdRadialMap, sphere_tabulated_ld_radial>>();
+    register_sampler<SphereLightOf<apse::LdRadialMap, sphere_light_ld_radial>>();
+    register_sampler<SphereLightOf<apse::TabulatedLdRadialMap, sphere_light_tabulated_ld_radial>>();
+    register_sampler<SphereCosine<apse::LdRadialMap, sphere_cosine_ld_radial_above, false>>();
+    register_sampler<SphereCosine<apse::LdRadialMap, sphere_cosine_ld_radial_cut, true>>();
+    register_sampler<SphereCosine<apse::TabulatedLdRadialMap, sphere_cosine_tabulated_ld_radial_above,
+                                  false>>();
+    register_sampler<SphereCosine<apse::TabulatedLdRadialMap, sphere_cosine_tabulated_ld_radial_cut,
+                                  true>>();
+    register_sampler<SphereCosine<apse::ParallelMap, sphere_cosine_parallel_above, false>>();
+    register_sampler<SphereCosine<apse::ParallelMap, sphere_cosine_parallel_cut, true>>();
     apse_bench::run();
     return 0;
 }

@@ -10,12 +10,13 @@ benchmark names:
                    --benchmark_format=json > elliptic.json
     python3 tools/bench_table.py elliptic.json          (or: ... | python3 tools/bench_table.py)
 
-* bench_samplers (names <sampler>/<float|double>/<samples>): README's "Speed" table — one row per
+* bench_samplers (names <sampler>/<float|double>/<samples>): the "Speed" table — one row per
   sampler, the ratio of its median time to lean area sampling's (DiskAreaSampler from the light's
   stored DiskFrame, same run) for set-up + 1 and set-up + 16 samples in double and float, the
   median ns in parentheses, and the mean iterations (or table-walk steps) and acceptance per
   sample; then the cost breakdown per map (projection, solid angle, map set-up, per sample) from
-  the set-up-only runs (<sampler>/<type>/0, "projection", "projection_solid_angle").
+  the set-up-only runs (<sampler>/<type>/0, "projection", "projection_solid_angle"); then the
+  sphere-light table (names sphere_*), whose reference is pbrt-v4's cone sampling run alongside.
 
     bench_samplers --benchmark_repetitions=5 --benchmark_report_aggregates_only=true \\
                    --benchmark_min_time=0.2 --benchmark_enable_random_interleaving=true \\
@@ -73,6 +74,26 @@ SAMPLERS = [
     ('cosine_tabulated_ld_radial', '`CosineWeighted<TabulatedLdRadialMap>`'),
     ('cosine_tabulated_ld_radial_16_nodes', '`CosineWeighted<TabulatedLdRadialMap, 16>`'),
     ('cosine_tabulated_ld_radial_32_nodes', '`CosineWeighted<TabulatedLdRadialMap, 32>`'),
+]
+# bench_samplers' sphere-light rows (names sphere_*), in table order; each row's reference is
+# pbrt-v4's cone sampling (sphere_cone), the SphereLight rows' the same with the point on the
+# sphere (sphere_cone_point)
+SPHERES = [
+    ('sphere_cone', 'pbrt-v4 cone sampling, direction (reference)'),
+    ('sphere_cone_point', 'pbrt-v4 cone sampling + point and distance (reference of the `SphereLight` rows)'),
+    ('sphere_radial', '`RadialMap`'),
+    ('sphere_ld_radial', '`LdRadialMap`'),
+    ('sphere_parallel', '`ParallelMap`'),
+    ('sphere_tabulated', '`TabulatedMap`'),
+    ('sphere_tabulated_ld_radial', '`TabulatedLdRadialMap`'),
+    ('sphere_light_ld_radial', '`SphereLight<LdRadialMap>`'),
+    ('sphere_light_tabulated_ld_radial', '`SphereLight<TabulatedLdRadialMap>`'),
+    ('sphere_cosine_ld_radial_above', '`CosineWeighted<LdRadialMap>`, cap above the horizon'),
+    ('sphere_cosine_ld_radial_cut', '`CosineWeighted<LdRadialMap>`, cap cut by the horizon'),
+    ('sphere_cosine_tabulated_ld_radial_above', '`CosineWeighted<TabulatedLdRadialMap>`, cap above the horizon'),
+    ('sphere_cosine_tabulated_ld_radial_cut', '`CosineWeighted<TabulatedLdRadialMap>`, cap cut by the horizon'),
+    ('sphere_cosine_parallel_above', '`CosineWeighted<ParallelMap>`, cap above the horizon'),
+    ('sphere_cosine_parallel_cut', '`CosineWeighted<ParallelMap>`, cap cut by the horizon'),
 ]
 # set-up parts (cost breakdown only)
 PARTS = [('projection', 'project_disk'), ('projection_solid_angle', 'project_disk + solid_angle')]
@@ -133,34 +154,64 @@ def layout_name(data):
     return ('functions aligned to %s bytes' % m.group(1)) if m else 'default layout'
 
 
+def reference_of(sampler):
+    """The row a sampler's ratio is taken to: area sampling for disks, cone sampling for spheres."""
+    if sampler.startswith('sphere_light_'):
+        return 'sphere_cone_point'
+    return 'sphere_cone' if sampler.startswith('sphere_') else 'area'
+
+
 def samplers_table(datas):
     layouts = [sampler_runs(d) for d in datas]
     have_median, reps = layouts[0][1], layouts[0][2]
     keys = set().union(*(set(r) for r, _, _ in layouts))
-    # per key: the median time over the layouts, and the per-layout ratios to area sampling
+    # per key: the median time over the layouts, and the per-layout ratios to the reference
     times, ratios = {}, {}
     for key in keys:
         t = [ns(r[key]) for r, _, _ in layouts if key in r]
         times[key] = median(t)
-        q = [ns(r[key]) / ns(r[('area',) + key[1:]]) for r, _, _ in layouts
-             if key in r and ('area',) + key[1:] in r]
+        ref = (reference_of(key[0]),) + key[1:]
+        q = [ns(r[key]) / ns(r[ref]) for r, _, _ in layouts if key in r and ref in r]
         if q:
             ratios[key] = q
-    first = layouts[0][0]
     extra = ''
     if len(datas) > 1:
         extra = '; median over %d code layouts (%s)' % (len(datas), ', '.join(layout_name(d) for d in datas))
     print(header(datas[0].get('context', {}), have_median, reps, extra))
     print()
+    disk_keys = {k for k in keys if not k[0].startswith('sphere_')}
+    sphere_keys = keys - disk_keys
+    if disk_keys:
+        ratio_table(layouts, disk_keys, times, ratios, SAMPLERS, len(datas),
+                    'Per fresh shading point: set-up (projection + map, or the baseline\'s own) + 1 or 16 '
+                    'samples, 1024 seeded unit disks 0.1–1000 radii away (log-uniform), all orientations, '
+                    'the same points of the square for every sampler. Ratio = median time / median time of '
+                    'DiskAreaSampler in the same run (> 1: slower than area sampling)')
+        breakdown_table(times, ratios)
+    if sphere_keys:
+        print()
+        ratio_table(layouts, sphere_keys, times, ratios, SPHERES, len(datas),
+                    'Sphere lights, per fresh shading point: set-up (project_sphere + map; the cone '
+                    'sampler\'s own) + 1 or 16 samples, 1024 seeded unit spheres 1.05–50 radii away '
+                    '(log-uniform); the cosine-weighted rows for receivers that see the cap above their '
+                    'horizon or cut by it. Ratio = median time / median time of pbrt-v4\'s cone sampling '
+                    'in the same run (the SphereLight rows: of cone sampling with the point and distance; '
+                    '> 1: slower)')
+
+
+def ratio_table(layouts, keys, times, ratios, titles, n_layouts, note):
+    """One table of ratios (to each row's reference_of) for the benchmark keys `keys`."""
+    first = layouts[0][0]
     cols = [('double', 1), ('double', 16), ('float', 1), ('float', 16)]
-    known = [k for k, _ in SAMPLERS] + [k for k, _ in PARTS]
-    rows = SAMPLERS + [(k, '`%s`' % k) for k in sorted({key[0] for key in keys}) if k not in known]
+    known = [k for k, _ in titles] + [k for k, _ in PARTS]
+    rows = titles + [(k, '`%s`' % k) for k in sorted({key[0] for key in keys}) if k not in known]
     rows = [(k, t) for k, t in rows if any(key[0] == k and key[2] > 0 for key in keys)]
+    references = {reference_of(k) for k, _ in rows}
 
     def cell(key, ty, n):
         if (key, ty, n) not in times:
             return '—'
-        if key == 'area':
+        if key in references:
             return '1 (%.0f ns)' % times[(key, ty, n)]
         if (key, ty, n) not in ratios:
             return '%.0f ns' % times[(key, ty, n)]
@@ -182,28 +233,23 @@ def samplers_table(datas):
         cells.append(counter('accepted', '%.3g'))
         print('| ' + ' | '.join(cells) + ' |')
     print()
-    print('Per fresh shading point: set-up (projection + map, or the baseline\'s own) + 1 or 16 '
-          'samples, 1024 seeded unit disks 0.1–1000 radii away (log-uniform), all orientations, '
-          'the same points of the square for every sampler. Ratio = median time / median time of '
-          'DiskAreaSampler in the same run (> 1: slower than area sampling)' +
-          (', then the median of that ratio over the layouts' if len(datas) > 1 else '') +
+    print(note + (', then the median of that ratio over the layouts' if n_layouts > 1 else '') +
           '; iterations = inversion iterations (exact maps) or table-walk steps (tabulated) per '
           'sample, from the set-up + 16 runs; accepted = fraction of samples with pdf > 0.')
-    if len(datas) > 1:
+    if n_layouts > 1:
         print()
-        print('Spread of each ratio over the %d layouts (lowest–highest):' % len(datas))
+        print('Spread of each ratio over the %d layouts (lowest–highest):' % n_layouts)
         print()
         print('| sampler | ' + ' | '.join('%s, set-up + %d' % c for c in cols) + ' |')
         print('|---|' + '---:|' * len(cols))
         for key, title in rows:
-            if key == 'area':
+            if key in references:
                 continue
             cells = [title]
             for ty, n in cols:
                 q = ratios.get((key, ty, n))
                 cells.append('—' if not q else '%.1f–%.1f×' % (min(q), max(q)))
             print('| ' + ' | '.join(cells) + ' |')
-    breakdown_table(times, ratios)
 
 
 def breakdown_table(times, ratios):
