@@ -124,7 +124,10 @@ TEMPLATE_TEST_CASE("tabulated: chi-square against the reported pdf", "[tabulated
                 INFO(name << " table " << table << " d " << cfg[0] << " h " << cfg[1] << " p " << r.p);
                 CHECK(outside == 0);
                 CHECK(r.p > level);
-                if (table == 1) CHECK(ru.p < 1e-6);  // the test can tell the density from uniform
+                // the test can tell the density from uniform; a cap (the frontal disk) is sampled
+                // exactly, without the table, and must pass against uniform instead
+                if (table == 1 && e.is_cap()) CHECK(ru.p > level);
+                if (table == 1 && !e.is_cap()) CHECK(ru.p < 1e-6);
             });
         }
     }

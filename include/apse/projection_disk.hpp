@@ -101,7 +101,12 @@ APSE_HOT_INLINE SphericalEllipse<T> project_disk_checked(const glm::vec<3, T>& w
         sin_c = T(2) * d * h;
         cos_c = T(2) * d * d + big_d;
     }
-    tan_beta = detail::min_of(tan_beta, tan_alpha);
+    // On the axis the cone is circular, and within a rounding of it nearly so: tangents within
+    // 4 eps of each other (on the axis they are <= 2 eps apart, measured) are made exactly equal,
+    // so that the maps take their closed-form cap path (docs/math.md §2, Caps under rounding).
+    // The shape, the solid angle and the pdf move by at most 4 eps relative.
+    const bool circular = on_axis || tan_alpha - tan_beta <= T(4) * epsilon<T>() * tan_alpha;
+    tan_beta = circular ? tan_alpha : detail::min_of(tan_beta, tan_alpha);
     const vec3 yd = on_axis ? detail::any_perpendicular(zd) : v * (T(1) / hv);
     const vec3 xd = glm::cross(yd, zd);
     // Every other field in closed form from lambda, without going through the tangents (shorter
@@ -140,6 +145,12 @@ APSE_HOT_INLINE SphericalEllipse<T> project_disk_checked(const glm::vec<3, T>& w
         e.one_minus_cos_beta = dr * (dr * rb);  // (dr² alone may be subnormal in float)
         e.one_minus_m = delta * inv_a * inv_a;
         e.m = (tan_alpha - tan_beta) * (tan_alpha + tan_beta) * (e.cos_alpha * e.cos_alpha);
+        if (circular) {  // an exact cap: the minor axis's fields are the major axis's
+            e.sin_beta = e.sin_alpha;
+            e.cos_beta = e.cos_alpha;
+            e.one_minus_cos_beta = e.one_minus_cos_alpha;
+            e.one_minus_m = T(1);
+        }
         return e;
     }
     // The centre's polar angle, normalised by rescaling (its norm² may underflow here).

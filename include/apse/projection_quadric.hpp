@@ -78,7 +78,14 @@ APSE_FUNC SphericalEllipse<T> ellipse_of_cone(const Sym3<T>& c, const Sym3<T>& c
     const int i1 = lam[ia] >= lam[ib] ? ia : ib, i2 = i1 == ia ? ib : ia;
     const T l1 = lam[i1], l2 = lam[i2], l3 = lam[ineg];
     if (!(l3 < T(0) && l2 > T(0) && detail::is_finite(l1 - l3))) return E::make_empty();
-    const T tan_alpha = std::sqrt(-l3 / l2), tan_beta = std::sqrt(-l3 / l1);
+    const T tan_alpha = std::sqrt(-l3 / l2);
+    // A circular cone (a circle seen along its axis, a sphere) comes out of the eigen-solver
+    // with tangents a few ulps apart (<= 5 eps, measured): within 8 eps they are made exactly
+    // equal, an exact cap that the maps sample in closed form (docs/math.md §2, Caps under
+    // rounding). The shape moves by at most 8 eps, the solid angle and pdf by at most 8 eps
+    // relative: below the eigen-solver's own error.
+    const T tan_beta_raw = std::sqrt(-l3 / l1);
+    const T tan_beta = tan_alpha - tan_beta_raw <= T(8) * epsilon<T>() * tan_alpha ? tan_alpha : tan_beta_raw;
     vec3 z = vec[ineg];
     if (glm::dot(z, toward) < T(0)) z = -z;
     vec3 x = vec[i2];
@@ -169,12 +176,20 @@ APSE_FUNC SphericalEllipse<T> project_ellipse(const glm::vec<3, T>& o, const glm
 
 /// The spherical cap subtended at `o` by the sphere |p − center| <= radius (docs/math.md §2b):
 /// alpha = beta = asin(radius / |center − o|), tan alpha = radius / sqrt((D − R)(D + R)),
-/// z towards the centre, (x, y) a deterministic frame around it.
+/// z towards the centre, (x, y) a deterministic frame around it (Duff et al. 2017's branchless
+/// orthonormal basis). The result is an exact cap (SphericalEllipse::is_cap(): tan_alpha ==
+/// tan_beta), which every map samples in closed form. Every field comes from D, R and
+/// L = sqrt((D − R)(D + R)) directly: sin alpha = R/D, cos alpha = L/D, tan alpha = R/L,
+/// 1 − cos alpha = sin^2/(1 + cos), no cancellation; the scene is rescaled by an exact power of
+/// two only when its scale is extreme (outside [2^-100, 2^100] in double, [2^-16, 2^16] in
+/// float), so D^2 neither overflows nor underflows.
 /// Empty for o inside or on the sphere (documented choice: a point inside sees the emitter in
-/// every direction, which is not a spherical ellipse), radius <= 0, NaN/Inf anywhere.
-/// Accuracy: tan alpha to a few ulps, except near the surface where D − R inherits the rounding
-/// of center − o (relative error ~ eps D/(D − R)). T is deduced from the vectors alone (the
-/// radius converts to it, as in project_disk).
+/// every direction, which is not a spherical ellipse), radius <= 0, NaN/Inf anywhere, and (as
+/// SphericalEllipse::from_tangents) tan alpha below detail::tan_min; tan alpha above
+/// detail::tan_cap (o within ~1e-16 radii of the surface in double) is capped there.
+/// Accuracy: tan alpha and the other fields to a few ulps, except near the surface where D − R
+/// inherits the rounding of center − o (relative error ~ eps D/(D − R)). T is deduced from the
+/// vectors alone (the radius converts to it, as in project_disk).
 template <class T>
 APSE_FUNC SphericalEllipse<T> project_sphere(const glm::vec<3, T>& o, const glm::vec<3, T>& center,
                                              detail::type_identity_t<T> radius) noexcept {
@@ -183,15 +198,36 @@ APSE_FUNC SphericalEllipse<T> project_sphere(const glm::vec<3, T>& o, const glm:
     const vec3 p0 = center - o;
     const T p_max = detail::max_abs3(p0);
     if (!(radius > T(0)) || !detail::is_finite(radius + p_max) || !detail::finite3(p0)) return E::make_empty();
-    const detail::Pow2Scale<T> sc = detail::pow2_scale_for(detail::max_of(p_max, radius));
-    const vec3 p = sc(p0);
-    const T r = sc(radius);
+    const T s_max = detail::max_of(p_max, T(radius));
+    vec3 p = p0;
+    T r = radius;
+    if (!(s_max >= detail::safe_scale_min<T>() && s_max <= detail::safe_scale_max<T>())) {
+        const detail::Pow2Scale<T> sc = detail::pow2_scale_for(s_max);
+        p = sc(p0);
+        r = sc(T(radius));
+    }
     const T dist = std::sqrt(glm::dot(p, p));
     if (!(dist > r)) return E::make_empty();
-    const T tan_a = r / std::sqrt((dist - r) * (dist + r));
-    const vec3 z = p / dist;
-    const vec3 x = detail::any_perpendicular(z);
-    return E::from_tangents(x, glm::cross(z, x), z, tan_a, tan_a);
+    const T l = std::sqrt((dist - r) * (dist + r));
+    const T inv_d = T(1) / dist;
+    E e;
+    e.z = p * inv_d;
+    // Duff, Burgess, Christensen, Hery, Kensler, Liani, Villemin, "Building an Orthonormal Basis,
+    // Revisited" (JCGT 2017): right-handed, continuous except at z.z = 0's sign flip.
+    const T sign = std::copysign(T(1), e.z.z);
+    const T a = T(-1) / (sign + e.z.z), b = e.z.x * e.z.y * a;
+    e.x = vec3(T(1) + sign * e.z.x * e.z.x * a, sign * b, -sign * e.z.x);
+    e.y = vec3(b, sign + e.z.y * e.z.y * a, -e.z.y);
+    const T tan_a = r / l;
+    if (!(tan_a >= detail::tan_min<T>() && tan_a <= detail::tan_cap<T>()))
+        return E::from_tangents(e.x, e.y, e.z, tan_a, tan_a);  // empty, or capped at tan_cap
+    e.tan_alpha = e.tan_beta = tan_a;
+    e.sin_alpha = e.sin_beta = r * inv_d;
+    e.cos_alpha = e.cos_beta = l * inv_d;
+    e.one_minus_cos_alpha = e.one_minus_cos_beta = e.sin_alpha * e.sin_alpha / (T(1) + e.cos_alpha);
+    e.m = T(0);
+    e.one_minus_m = T(1);
+    return e;
 }
 
 /// The spherical ellipse subtended at `o` by the solid ellipsoid

@@ -171,12 +171,16 @@ template <class T> struct ParallelAreas : EllipseAreas<T> {
     using EllipseAreas<T>::radial_area;
     T k_e;    ///< 1/(1 + cos beta): sin e / b = 2 t q k_e
     T t_max;  ///< tan(beta/2) = b k_e: the slice position's scale
+    T omc;    ///< 1 − cos alpha (a cap's sector area per radian of azimuth)
+    bool cap; ///< the ellipse is a cap (SphericalEllipse::is_cap): sectors in closed form
 
     static APSE_FUNC ParallelAreas make(const SphericalEllipse<T>& e) noexcept {
         ParallelAreas k;
         static_cast<EllipseAreas<T>&>(k) = EllipseAreas<T>::make(e);
         k.k_e = T(1) / (T(1) + k.cb);
         k.t_max = k.b * k.k_e;
+        k.omc = e.one_minus_cos_alpha;
+        k.cap = e.is_cap();
         return k;
     }
 
@@ -216,9 +220,11 @@ template <class T> struct ParallelAreas : EllipseAreas<T> {
     }
 
     /// Half-area I(psi) between the slices 0 and psi (file comment): the radial sector to the
-    /// boundary point plus the geodesic triangle, doubled. Relative accuracy a few eps.
+    /// boundary point plus the geodesic triangle, doubled. Relative accuracy a few eps. On a cap
+    /// the sector is (1 − cos alpha) phi_P, phi_P = atan2(sin tau, cos tau) the azimuth of the
+    /// boundary point (docs/math.md §5, Caps): no elliptic integral.
     APSE_NOINLINE APSE_FUNC T parallel_half_area(const ParallelPoint<T>& p) const noexcept {
-        const T sector = radial_area(p.ct, p.st, p.c_max);
+        const T sector = cap ? omc * std::atan2(p.st, p.ct) : radial_area(p.ct, p.st, p.c_max);
         // (both atan2 arguments divided by N: x_max sin psi and O(1) terms, no underflow for tiny ellipses)
         const T triangle = T(2) * std::atan2(p.x_max * p.sin_psi, (T(1) + p.c_max + p.cos_psi) + p.cos_arc);
         return T(2) * (sector + triangle);

@@ -56,7 +56,10 @@ template <class T> APSE_FUNC T parallel_guess(T g, T beta, T w, T pade) noexcept
 /// in t) by bracketed Halley/Newton with the exact density, from a shape-blended first guess,
 /// one closed-form evaluation and cheap Hermite increments after it (detail/inversion.hpp);
 /// relative stopping rule 4 eps of Omega/2. Accuracy (measured, docs/maps.md): cumulative-area
-/// error <= 1e-14 (double) / 1e-6 (float) relative to Omega/2. Trivially copyable.
+/// error <= 1e-14 (double) / 1e-6 (float) relative to Omega/2. On a spherical cap
+/// (SphericalEllipse::is_cap()) the solid angle is 2 pi (1 − cos alpha) and the cumulative area
+/// has no elliptic integral (docs/math.md §5, Caps); the inversion is the same bracketed one.
+/// Trivially copyable.
 template <class T> class ParallelMap {
     static_assert(detail::is_real_type<T>(), "apse: ParallelMap<T>: T must be float or double");
 
@@ -67,7 +70,7 @@ public:
     /// Builds the map for `ellipse` (empty allowed: every sample then has pdf 0).
     APSE_FUNC explicit ParallelMap(const SphericalEllipse<T>& ellipse) noexcept
         : ellipse_(ellipse), areas_(detail::ParallelAreas<T>::make(ellipse)), beta_(ellipse.beta()) {
-        omega_ = detail::solid_angle_of(ellipse);
+        omega_ = areas_.cap ? two_pi_v<T> * ellipse.one_minus_cos_alpha : detail::solid_angle_of(ellipse);
         valid_ = !ellipse.empty() && omega_ > T(0) && detail::is_finite(omega_);
         inv_omega_ = valid_ ? T(1) / omega_ : T(0);
         half_ = T(0.5) * omega_;

@@ -85,11 +85,47 @@ APSE_FUNC RadialFraction<T> radial_fraction(const EllipseAxes<T>& k, T x, T y, T
     return {one_minus_z, one_minus_c};
 }
 
+/// cos theta and sin theta at the radial solid-angle fraction u2 in [0, 1] of a spherical cap
+/// with 1 − cos alpha = omc (docs/math.md §4, Caps): 1 − cos theta = v = u2 omc and
+/// sin theta = sqrt(v (2 − v)), both without cancellation (near the centre and near the horizon).
+/// The polar step of every radial map on a cap (RadialMap, TabulatedMap and their LD forms).
+template <class T> APSE_FUNC SinCosValues<T> cap_polar(T omc, T u2) noexcept {
+    const T v = u2 * omc;
+    return {std::sqrt(v * (T(2) - v)), T(1) - v};
+}
+
+/// The local direction of a cap (1 − cos alpha = omc) for the quadrant and quarter-turn fraction
+/// `fold` and the radial fraction u2 in [0, 1]: azimuth phi = fraction pi/2 reflected into the
+/// quadrant (a cap's cumulative area is linear in the azimuth, so this is the point the general
+/// radial map gives), polar angle by cap_polar. No inversion, no table.
+template <class T>
+APSE_FUNC glm::vec<3, T> cap_direction(const QuadrantFold<T>& fold, T omc, T u2) noexcept {
+    const SinCosValues<T> az = sin_cos_quarter_turn(fold.fraction);
+    const SinCosValues<T> p = cap_polar(omc, u2);
+    return place_in_quadrant(fold, p.s * az.c, p.s * az.s, p.c);
+}
+
+/// Inverse of cap_direction for the unit local direction `l`: u1 from the azimuth
+/// (atan2(|y|, |x|) 2/pi, unfolded from its quadrant), u2 = (1 − cos theta)/omc with
+/// 1 − cos theta = (x^2 + y^2)/(1 + z); clamped to [0, 1]^2 (a direction outside the cap, or
+/// below its horizon, gives u2 = 1: the rim point at its azimuth).
+template <class T> APSE_FUNC glm::vec<2, T> cap_coordinates(const glm::vec<3, T>& l, T omc) noexcept {
+    const T x = std::fabs(l.x), y = std::fabs(l.y);
+    const T f = clamp(std::atan2(y, x) * (T(2) / pi_v<T>), T(0), T(1));
+    const T u1 = clamp(unfold_quadrant_fraction(quadrant_of(l.x, l.y), f), T(0), T(1));
+    const T u2 = l.z > T(0) ? clamp(((x * x + y * y) / (T(1) + l.z)) / omc, T(0), T(1)) : T(1);
+    return glm::vec<2, T>(u1, u2);
+}
+
 }  // namespace detail
 
 /// Radial area-preserving map of the unit square onto a spherical ellipse (docs/math.md §4).
 ///
 /// Construction precomputes the solid angle (one R_J) and the constants of the cumulative area.
+/// A spherical cap (SphericalEllipse::is_cap(), e.g. from project_sphere) is sampled in closed
+/// form instead (docs/math.md §4, Caps): Omega = 2 pi (1 − cos alpha), azimuth linear in u1,
+/// 1 − cos theta = u2 (1 − cos alpha); the same directions as the general path to rounding, no
+/// iteration (0 iterations reported).
 /// Each sample folds u1 onto a quadrant, solves Omega_r(tau) = f Omega/4 for the orthographic
 /// eccentric anomaly tau (maps/cumulative_area.hpp) by bracketed Halley/Newton with the exact
 /// density, from the Lambert-equal-area first guess tan tau = (cos(alpha/2)/cos(beta/2)) tan(f pi/2)
@@ -108,8 +144,8 @@ public:
     /// Builds the map for `ellipse` (any SphericalEllipse, empty included: then every sample has
     /// pdf 0).
     APSE_FUNC explicit RadialMap(const SphericalEllipse<T>& ellipse) noexcept
-        : ellipse_(ellipse), areas_(detail::EllipseAreas<T>::make(ellipse)) {
-        omega_ = detail::solid_angle_of(ellipse);
+        : ellipse_(ellipse), areas_(detail::EllipseAreas<T>::make(ellipse)), cap_(ellipse.is_cap()) {
+        omega_ = cap_ ? two_pi_v<T> * ellipse.one_minus_cos_alpha : detail::solid_angle_of(ellipse);
         valid_ = !ellipse.empty() && omega_ > T(0) && detail::is_finite(omega_);
         inv_omega_ = valid_ ? T(1) / omega_ : T(0);
         quarter_ = T(0.25) * omega_;
@@ -163,6 +199,10 @@ private:
     /// `iterations`: sample() after fold_quadrant(u1), LdRadialMap's after the concentric map.
     APSE_HOT_INLINE DirectionSample<T> sample_folded(const detail::QuadrantFold<T>& fold, T u2,
                                                int& iterations) const noexcept {
+        if (cap_) {
+            iterations = 0;
+            return {ellipse_.to_world(detail::cap_direction(fold, ellipse_.one_minus_cos_alpha, u2)), inv_omega_};
+        }
         const detail::RadialPoint<T> p = solve_quadrant(fold.fraction, iterations);
         return {ellipse_.to_world(detail::radial_direction(areas_, fold, p.ct, p.st, p.c_max, u2)), inv_omega_};
     }
@@ -170,6 +210,7 @@ private:
     /// (u1, u2) of the unit local direction `l` (clamped to [0, 1]^2): invert() and LdRadialMap's
     /// inverse (maps/ld_radial.hpp, through detail::MapAccess).
     APSE_FUNC vec2 local_coordinates(const vec3& l) const noexcept {
+        if (cap_) return detail::cap_coordinates(l, ellipse_.one_minus_cos_alpha);
         const int q = detail::quadrant_of(l.x, l.y);
         const T x = std::fabs(l.x), y = std::fabs(l.y);
         // tan tau = (a/b) tan phi: (cos tau, sin tau) ∝ (b x, a y) ∝ ((b/a) x, y).
@@ -240,6 +281,7 @@ private:
     SphericalEllipse<T> ellipse_;
     detail::EllipseAreas<T> areas_;
     T omega_, inv_omega_, quarter_, kappa_, singular_im2_;
+    bool cap_;  ///< the ellipse is a cap: sampled and inverted in closed form
     bool valid_;
 };
 

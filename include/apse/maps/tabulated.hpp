@@ -53,7 +53,10 @@ namespace apse {
 /// area-preserving (nearly: pdf Omega within the table's error of 1), but the reported pdf is
 /// exactly its density. Per shading point: no elliptic integral, no Omega, no library call (the
 /// table coordinate beta/alpha by polynomials); per sample: a short table walk (rarely more than
-/// the first guess) and a polynomial sin/cos. Holds a pointer into the table
+/// the first guess) and a polynomial sin/cos. On a spherical cap (SphericalEllipse::is_cap())
+/// the azimuthal CDF is exactly linear, so sample(), pdf() and invert() use RadialMap's closed
+/// form instead of the table (docs/math.md §6, Caps): exactly uniform, pdf exactly
+/// 1/(2 pi (1 − cos alpha)). Holds a pointer into the table
 /// (the table must outlive the map). Trivially copyable.
 template <class T> class TabulatedMap {
     static_assert(detail::is_real_type<T>(), "apse: TabulatedMap<T>: T must be float or double");
@@ -71,6 +74,9 @@ public:
         for (int r = 0; r < 4; ++r) { rows_[r] = table.cdf; weights_[r] = T(0); }
         valid_ = !ellipse.empty() && table.cdf != nullptr && table.bins >= 1 && table.alpha_nodes >= 2 &&
                  table.ratio_nodes >= 2 && ellipse.tan_alpha > T(0);
+        // a cap's azimuthal CDF is exactly linear: sample() draws it exactly, density 1/Omega
+        cap_ = ellipse.is_cap();
+        cap_inv_omega_ = cap_ ? T(1) / (two_pi_v<T> * ellipse.one_minus_cos_alpha) : T(0);
         // kappa^2 = (1 + cos alpha)/(1 + cos beta) and its inverse, paired; then kappa and
         // sqrt(cos alpha), paired
         T inv_kappa2, sqrt_ca;
@@ -150,6 +156,7 @@ public:
     /// included), 0 outside, for an empty map, or a zero/NaN direction.
     APSE_FUNC T pdf(const vec3& d) const noexcept {
         if (!valid_ || !ellipse_.contains(d)) return T(0);
+        if (cap_) return cap_inv_omega_;
         const vec3 l = ellipse_.to_local(d);
         const Azimuth az = azimuth_of(std::fabs(l.x), std::fabs(l.y));
         const T lo = cdf_at(az.bin), hi = cdf_at(az.bin + 1);
@@ -231,6 +238,10 @@ private:
     /// fraction u2 in [0, 1] (not checked; the map is valid), with the table-walk steps in
     /// `steps`: sample() after fold_quadrant(u1), TabulatedLdRadialMap's after the concentric map.
     APSE_HOT_INLINE DirectionSample<T> sample_folded(const detail::QuadrantFold<T>& fold, T u2, int& steps) const noexcept {
+        if (cap_) {
+            steps = 0;
+            return {ellipse_.to_world(detail::cap_direction(fold, ellipse_.one_minus_cos_alpha, u2)), cap_inv_omega_};
+        }
         return ray_sample(ray_folded(fold, steps), u2);
     }
 
@@ -272,7 +283,9 @@ private:
 
     /// (u1, u2) of the unit local direction `l` (clamped to [0, 1]^2): invert() and
     /// TabulatedLdRadialMap's inverse (maps/ld_radial.hpp, through detail::MapAccess).
-    APSE_FUNC vec2 local_coordinates(const vec3& l) const noexcept { return local_point(l).u; }
+    APSE_FUNC vec2 local_coordinates(const vec3& l) const noexcept {
+        return cap_ ? detail::cap_coordinates(l, ellipse_.one_minus_cos_alpha) : local_point(l).u;
+    }
 
     /// sample(u), counting the table-walk steps in `iterations` (0 when the uniform guess was the
     /// bin).
@@ -326,6 +339,8 @@ private:
     T weights_[4];
     int bins_;
     T kappa_, kappa2_, bin_width_, inv_bins_, pdf_scale_;
+    T cap_inv_omega_;  ///< 1/(2 pi (1 − cos alpha)) on a cap, else 0
+    bool cap_;         ///< the ellipse is a cap: sample(), pdf() and invert() in closed form
     bool valid_;
 };
 
