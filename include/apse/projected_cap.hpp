@@ -1,0 +1,381 @@
+// apse — area-preserving parameterizations for spherical ellipses.
+// SPDX-License-Identifier: MIT
+#pragma once
+
+/// @file projected_cap.hpp
+/// `ProjectedCapSampler<T>`: directions on a spherical cap drawn with density exactly
+/// max(0, n·ω) / Omega_perp (Omega_perp the cap's projected solid angle, in closed form) for a
+/// receiver with normal n; no sample falls below the receiver's horizon (docs/math.md §14).
+///
+/// Receiver frame: Z = n, X the unit tangent towards the cap's centre c = (sin g, 0, cos g)
+/// (g the angle between n and c), Y = Z × X. The orthographic projection onto the tangent plane
+/// turns density in area into density cos theta / area in solid angle (Nusselt), so a uniform
+/// point of the cap's projection, lifted to the sphere, has the density wanted. The cap of
+/// angular radius a projects to the ellipse centred at (x0, 0), x0 = cos a sin g, with signed
+/// semi-axis a' = sin a cos g along X and b = sin a along Y.
+/// * Above the horizon (g + a <= pi/2): the filled ellipse, area pi sin^2 a cos g; u goes
+///   through the concentric map to the unit disk, scaled by (a', b) and lifted — closed form,
+///   no iteration.
+/// * Cut by the horizon: at each y the visible part is one interval [x_lo(y), x_hi(y)];
+///   u1 → y by inverting the closed-form cumulative area in y (the substitution y = b sin theta,
+///   bracketed Halley steps with a relative stopping rule and an iteration cap), then
+///   x = x_lo + u2 (x_hi − x_lo). Continuous and area-preserving in u: stratified points stay
+///   stratified.
+/// Directions are assembled in the cap's own frame from differences computed without
+/// cancellation, so that small caps keep their digits (samples stay inside the cap).
+
+#include <cmath>
+
+#include "config.hpp"
+#include "math.hpp"
+#include "sample.hpp"
+#include "spherical_ellipse.hpp"
+#include "detail/concentric.hpp"
+#include "detail/glm.hpp"
+#include "detail/polynomial_trig.hpp"
+#include "detail/quadrant.hpp"
+#include "detail/vector.hpp"
+
+namespace apse {
+namespace detail {
+
+/// asin(y) − y for y in [0, 1] without cancellation: y^3 times the Maclaurin series of
+/// (asin y − y)/y^3 below y = 1/4 (13 terms: the first left out is below 2e-17 relative), the
+/// difference above (where it is at least y^3/6: it loses at most a factor 6 of eps there).
+template <class T> APSE_FUNC T asin_minus_identity(T y) noexcept {
+    if (y < T(0.25)) {
+        const T y2 = y * y;
+        T p = T(1300075.0 / 226492416.0);
+        p = T(676039.0 / 104857600.0) + y2 * p;
+        p = T(88179.0 / 12058624.0) + y2 * p;
+        p = T(46189.0 / 5505024.0) + y2 * p;
+        p = T(12155.0 / 1245184.0) + y2 * p;
+        p = T(6435.0 / 557056.0) + y2 * p;
+        p = T(143.0 / 10240.0) + y2 * p;
+        p = T(231.0 / 13312.0) + y2 * p;
+        p = T(63.0 / 2816.0) + y2 * p;
+        p = T(35.0 / 1152.0) + y2 * p;
+        p = T(5.0 / 112.0) + y2 * p;
+        p = T(3.0 / 40.0) + y2 * p;
+        p = T(1.0 / 6.0) + y2 * p;
+        return y * y2 * p;
+    }
+    return std::asin(min_of(y, T(1))) - y;
+}
+
+/// x − sin x cos x for x in [0, pi/2] given s = sin x, c = cos x, without cancellation: the
+/// Taylor series of (2x − sin 2x)/2 below x = 1/2, the difference above (it loses at most a
+/// factor 6 of eps there).
+template <class T> APSE_FUNC T cap_angle_minus_sin_cos(T x, T s, T c) noexcept {
+    if (x < T(0.5)) {
+        const T y2 = T(4) * x * x;
+        T p = T(1) - y2 * T(1.0 / 342.0);
+        p = T(1) - y2 * T(1.0 / 272.0) * p;
+        p = T(1) - y2 * T(1.0 / 210.0) * p;
+        p = T(1) - y2 * T(1.0 / 156.0) * p;
+        p = T(1) - y2 * T(1.0 / 110.0) * p;
+        p = T(1) - y2 * T(1.0 / 72.0) * p;
+        p = T(1) - y2 * T(1.0 / 42.0) * p;
+        p = T(1) - y2 * T(1.0 / 20.0) * p;
+        return T(2.0 / 3.0) * x * x * x * p;  // (2x)^3 / 12 (1 − ...)
+    }
+    return x - s * c;
+}
+
+}  // namespace detail
+
+/// Exact projected-solid-angle (cosine-weighted) sampling of a spherical cap for a receiver with
+/// normal n (file comment; docs/math.md §14): density max(0, n·ω) / Omega_perp in solid angle,
+/// exactly, for caps above the horizon, cut by it (centre above or below it) — no sample below
+/// the horizon — and empty for caps entirely below it. The input square is mapped continuously
+/// and area-preservingly (stratified and QMC points stay stratified). Set-up: one square root
+/// above the horizon; a few square roots, one atan2 and one asin when the horizon cuts the cap.
+/// Per sample: closed form above the horizon (the concentric map, two square roots); 2–4
+/// bracketed Halley steps (polynomial sine and cosine, one square root, one asin only for
+/// |y| >= 1/4) when cut, stopped relative to the area inverted (never a fixed absolute
+/// tolerance) with a hard cap of 40 steps. Trivially copyable; no allocation.
+template <class T> class ProjectedCapSampler {
+    static_assert(detail::is_real_type<T>(), "apse: ProjectedCapSampler<T>: T must be float or double");
+
+public:
+    using vec2 = glm::vec<2, T>;  ///< a point of the unit square
+    using vec3 = glm::vec<3, T>;  ///< a 3-D vector (direction or normal)
+
+    /// The empty sampler (every pdf 0).
+    APSE_FUNC ProjectedCapSampler() noexcept {}
+
+    /// The sampler of the cap `cap` for a receiver with world-space normal `receiver_normal` (any
+    /// non-zero finite length; the receiver's side is the one it points to). Empty (every pdf 0)
+    /// if `cap` is not a cap (`is_cap()` false: empty or a non-circular ellipse), for a zero, NaN
+    /// or infinite normal, and for a cap entirely below the horizon (cos(g − a) <= 0, g the angle
+    /// from the normal to the centre, a the cap's angular radius).
+    APSE_FUNC ProjectedCapSampler(const SphericalEllipse<T>& cap, const vec3& receiver_normal) noexcept {
+        if (!cap.is_cap()) return;
+        const T scale = detail::max_abs3(receiver_normal);
+        if (!(scale > T(0)) || !detail::is_finite(scale) || !detail::finite3(receiver_normal)) return;
+        bool ok = true;
+        const vec3 n = detail::normalize_direction(receiver_normal * (T(1) / scale), ok);
+        if (!ok) return;
+        const vec3 nl = cap.to_local(n);
+        const T sg = detail::hypot2(nl.x, nl.y), cg = nl.z;
+        // e1: the unit tangent at the centre pointing away from n (any one when n ∥ c), e2 = c × e1
+        const T e1x = sg > T(0) ? -nl.x / sg : T(1), e1y = sg > T(0) ? -nl.y / sg : T(0);
+        const T sa = cap.sin_alpha, ca = cap.cos_alpha;
+        const T cos_sum = cg * ca - sg * sa;   // cos(g + a): the rim's lowest point's height
+        const T cos_diff = cg * ca + sg * sa;  // cos(g − a): its highest point's height
+        if (!(cos_diff > T(0))) return;        // entirely below the horizon
+        e_ = cap;
+        c_ = cap.z;
+        e1_ = cap.to_world(vec3(e1x, e1y, T(0)));
+        e2_ = cap.to_world(vec3(-e1y, e1x, T(0)));
+        n_ = n;
+        sg_ = sg;
+        cg_ = cg;
+        sa_ = sa;
+        ca_ = ca;
+        omca_ = cap.one_minus_cos_alpha;
+        x0_ = ca * sg;
+        ap_ = sa * cg;
+        // 1 − x0 = (1 − cos a) + cos a (1 − sin g), 1 − sin g = cos^2 g / (1 + sin g)
+        one_minus_x0_ = omca_ + ca * (cg * cg / (T(1) + sg));
+        if (cos_sum >= T(0)) {  // above the horizon: the filled ellipse
+            cut_ = false;
+            area_ = pi_v<T> * sa * sa * cg;
+            half_ = T(0.5) * area_;
+        } else {
+            cut_ = true;
+            // the rim meets the horizon at y_t = sin a sin theta_t, with
+            // sin theta_t = sqrt(−cos(g + a) cos(g − a)) / (sin a sin g), cos theta_t = |cos a cos g| / (sin a sin g)
+            const T st = std::sqrt(-cos_sum * cos_diff), ct = std::fabs(ca * cg);
+            const T len = detail::hypot2(st, ct);
+            st_ = st / len;
+            ct_ = ct / len;
+            theta_t_ = std::atan2(st_, ct_);
+            inner_ = inner_area(theta_t_, st_, ct_);
+            // beyond theta_t (centre above the horizon only): the ellipse's own band,
+            // a' b (x − sin x cos x) from its top, x = pi/2 − theta
+            outer_ = cg > T(0) ? ap_ * sa * detail::cap_angle_minus_sin_cos(half_pi_v<T> - theta_t_, ct_, st_) : T(0);
+            half_ = inner_ + outer_;
+            area_ = T(2) * half_;
+        }
+        if (!(area_ > T(0)) || !detail::is_finite(area_)) return;
+        inv_area_ = T(1) / area_;
+        empty_ = false;
+    }
+
+    /// True if the sampler cannot sample (not a cap, zero/NaN normal, cap below the horizon):
+    /// every sample and pdf is then 0.
+    APSE_FUNC bool empty() const noexcept { return empty_; }
+
+    /// The cap sampled (the empty ellipse for a sampler built on something else).
+    APSE_FUNC const SphericalEllipse<T>& ellipse() const noexcept { return e_; }
+
+    /// True if the receiver's horizon cuts the cap (the sampler then inverts a cumulative area).
+    APSE_FUNC bool cut() const noexcept { return cut_; }
+
+    /// The cap's projected solid angle Omega_perp = ∫ max(0, n·ω) dω over the cap (steradians;
+    /// 0 for empty()): pi sin^2 a cos g above the horizon, the closed form of docs/math.md §14
+    /// when cut. Relative accuracy a few eps of T above the horizon and when the cap's centre is
+    /// above it; with the centre below the horizon the closed form's terms cancel as the visible
+    /// sliver vanishes (docs/math.md §14 has the measured accuracy).
+    APSE_FUNC T projected_solid_angle() const noexcept { return empty_ ? T(0) : area_; }
+
+    /// Direction for the point u of the unit square (clamped into [0, 1]^2): a world-space unit
+    /// vector inside the cap and above the receiver's horizon, with its density
+    /// max(0, n·ω) / Omega_perp in solid angle. NaN u or empty(): pdf 0 and the cap's centre.
+    /// u2 = 1 where the visible range ends at the horizon: that horizon direction, pdf 0; a
+    /// direction that rounding puts on or below the horizon: pdf 0 (declined).
+    APSE_FUNC DirectionSample<T> sample(const vec2& u) const noexcept {
+        bool ok = !empty_;
+        const vec2 uc = detail::clamp_unit(u, ok);
+        if (!ok) return {c_, T(0)};
+        if (!cut_) {
+            // the concentric map's disk point (dx, dy), its flat-disk point Q = cos a c + sin a (dx e1 + dy e2),
+            // lifted along n: w = Q + t n, t = sin^2 a (1 − r^2) / (Q_z + sqrt(Q_z^2 + sin^2 a (1 − r^2)))
+            const detail::ConcentricSigned<T> d = detail::concentric_to_disk_signed(uc);
+            // (cos, sin) of the angle in [−pi/4, 3pi/4]: of |angle| up to pi/2, of angle − pi/2 beyond
+            const bool high = d.angle > half_pi_v<T>;
+            const detail::SinCosValues<T> v = detail::sin_cos_of_angle(high ? d.angle - half_pi_v<T> : std::fabs(d.angle));
+            const T ca = high ? -v.s : v.c, sa = high ? v.c : std::copysign(v.s, d.angle);
+            const T dx = d.radius * ca, dy = d.radius * sa;
+            const T r = std::fabs(d.radius);
+            const T rest = sa_ * sa_ * ((T(1) - r) * (T(1) + r));
+            const T qz = detail::max_of(ca_ * cg_ - sa_ * sg_ * dx, T(0));
+            const T den = qz + std::sqrt(qz * qz + rest);
+            const T t = den > T(0) ? rest / den : T(0);
+            const T z = qz + t;
+            const T p = sa_ * dx - t * sg_, q = sa_ * dy, s = ca_ + t * cg_;
+            const vec3 w = p * e1_ + q * e2_ + s * c_;
+            return {w, z > T(0) ? z * inv_area_ : T(0)};
+        }
+        const T v = T(2) * uc.x - T(1);
+        const T side = v < T(0) ? T(-1) : T(1);
+        const T f = std::fabs(v);
+        const T rest = (T(1) - f) * half_;  // the area beyond y, towards the top
+        T s_th, c_th, width, gap, xlo, h;
+        if (rest < outer_) {
+            // the ellipse's band: a' b E(x) = rest, x = pi/2 − theta, E(x) = x − sin x cos x
+            const T target = rest / (ap_ * sa_);
+            const T xmax = half_pi_v<T> - theta_t_;
+            const T guess = detail::min_of(cbrt_guess(T(1.5) * target), xmax);
+            T sx = T(0), cx = T(1);
+            auto eval = [&](T x, T& value, T& derivative) {
+                const detail::SinCosValues<T> sc = detail::sin_cos_of_angle(x);
+                sx = sc.s;
+                cx = sc.c;
+                value = detail::cap_angle_minus_sin_cos(x, sx, cx) - target;
+                const T f1 = T(2) * sx * sx, f2 = T(4) * sx * cx;
+                derivative = f1 > T(0) ? f1 - value * f2 / (T(2) * f1) : f1;
+            };
+            detail::find_root_bracketed(eval, T(0), xmax, guess, tolerance() * target, 40);
+            s_th = cx;
+            c_th = sx;
+            width = T(2) * ap_ * c_th;
+            xlo = x0_ - ap_ * c_th;
+            const T hr = detail::max_of(ca_ * cg_ - sa_ * sg_ * c_th, T(0));  // the right rim point's height
+            const T yy = sa_ * s_th;
+            const T w = std::sqrt((T(1) - yy) * (T(1) + yy));
+            gap = hr * hr / (w + x0_ + ap_ * c_th);
+            h = ca_ * cg_ + sa_ * sg_ * c_th;
+        } else {
+            const T target = f * half_;
+            T sth = T(0), cth = T(1);
+            auto eval = [&](T th, T& value, T& derivative) {
+                const detail::SinCosValues<T> sc = detail::sin_cos_of_angle(th);
+                sth = sc.s;
+                cth = sc.c;
+                const T yy = sa_ * sth, w = std::sqrt((T(1) - yy) * (T(1) + yy));
+                value = inner_area(th, sth, cth) - target;
+                const T lw = inner_width(cth, w);
+                const T f1 = lw * sa_ * cth;
+                const T dl = -yy * sa_ * cth / w - ap_ * sth;
+                const T f2 = dl * sa_ * cth - lw * sa_ * sth;
+                derivative = f1 > T(0) ? f1 - value * f2 / (T(2) * f1) : f1;
+            };
+            const T guess = inner_ > T(0) ? theta_t_ * (target / inner_) : T(0);
+            detail::find_root_bracketed(eval, T(0), theta_t_, guess, tolerance() * inner_, 40);
+            s_th = sth;
+            c_th = cth;
+            const T yy = sa_ * s_th, w = std::sqrt((T(1) - yy) * (T(1) + yy));
+            width = inner_width(c_th, w);
+            xlo = x0_ - ap_ * c_th;
+            gap = T(0);
+            h = ca_ * cg_ + sa_ * sg_ * c_th;
+        }
+        // x = x_lo + u2 L; the height z from w^2 − x^2 = (w − x)(w + x), w − x = gap + (1 − u2) L
+        const T du = uc.y * width;
+        const T x = xlo + du;
+        const T yy = sa_ * s_th;
+        const T w = std::sqrt((T(1) - yy) * (T(1) + yy));
+        const T z = std::sqrt(detail::max_of((gap + (T(1) - uc.y) * width) * (w + x), T(0)));
+        h = detail::max_of(h, T(0));
+        // the cap frame's components, from the rim point (x_lo, y, h) = −sin a cos theta e1 + y e2 + cos a c:
+        // p − p_rim = cos g du − sin g (z − h), z − h = −du (x + x_lo)/(z + h)
+        const T zh = z + h;
+        const T p = -sa_ * c_th + du * (cg_ + (zh > T(0) ? sg_ * (x + xlo) / zh : T(0)));
+        const T q = side * yy;
+        const T s = sg_ * x + cg_ * z;
+        const vec3 dir = p * e1_ + q * e2_ + s * c_;
+        const T pd = z * inv_area_;
+        return {dir, pd > T(0) && glm::dot(n_, dir) > T(0) ? pd : T(0)};
+    }
+
+    /// Density of sample() at the world-space direction `d` (any non-zero length), in solid
+    /// angle: max(0, n·ω) / Omega_perp inside the cap (SphericalEllipse::contains), 0 outside,
+    /// below the horizon, for empty() or a zero/NaN direction.
+    APSE_FUNC T pdf(const vec3& d) const noexcept {
+        if (empty_) return T(0);
+        bool ok = true;
+        const vec3 l = detail::normalize_direction(d, ok);
+        if (!ok || !e_.contains(l)) return T(0);
+        const T c = glm::dot(n_, l);
+        return c > T(0) ? c * inv_area_ : T(0);
+    }
+
+    /// The point of the unit square whose sample has direction `d` (any non-zero length): the
+    /// inverse of sample(). Directions outside the cap or below the horizon: the same formulas,
+    /// clamped into [0, 1]^2. Zero/NaN direction or empty(): (0, 0).
+    APSE_FUNC vec2 invert(const vec3& d) const noexcept {
+        if (empty_) return vec2(T(0));
+        bool ok = true;
+        const vec3 l = detail::normalize_direction(d, ok);
+        if (!ok) return vec2(T(0));
+        const T p = glm::dot(l, e1_), q = glm::dot(l, e2_), s = glm::dot(l, c_);
+        // s − cos a = (1 − cos a) − (1 − s), 1 − s = (p^2 + q^2)/(1 + s)
+        const T s_minus_ca = omca_ - (p * p + q * q) / (T(1) + detail::max_of(s, T(0)));
+        if (!cut_) {
+            // back along n to the flat disk: t = (s − cos a)/cos g, disk point ((p + t sin g), q)/sin a
+            const T t = cg_ > T(0) ? s_minus_ca / cg_ : T(0);
+            const T dx = (p + t * sg_) / sa_, dy = q / sa_;
+            const T r = detail::hypot2(dx, dy);
+            const T turns = r > T(0) ? std::atan2(dy, dx) * T(0.15915494309189533577) : T(0);
+            return detail::concentric_from_disk(detail::min_of(r, T(1)), turns);
+        }
+        const T sth = detail::min_of(std::fabs(q) / sa_, T(1));
+        const T cth = std::sqrt((T(1) - sth) * (T(1) + sth));
+        const T th = std::atan2(sth, cth);
+        T below, width;  // the area from y = 0 to |y|, the width at y
+        // x − x_lo = cos g (p + sin a cos theta) + sin g (s − cos a)
+        const T dxl = cg_ * (p + sa_ * cth) + sg_ * s_minus_ca;
+        if (th > theta_t_ && outer_ > T(0)) {
+            below = half_ - ap_ * sa_ * detail::cap_angle_minus_sin_cos(half_pi_v<T> - th, cth, sth);
+            width = T(2) * ap_ * cth;
+        } else {
+            const T yy = sa_ * sth, w = std::sqrt((T(1) - yy) * (T(1) + yy));
+            below = inner_area(detail::min_of(th, theta_t_), sth, cth);
+            width = inner_width(cth, w);
+        }
+        const T u1 = T(0.5) + (q < T(0) ? T(-0.5) : T(0.5)) * (below / half_);
+        const T u2 = width > T(0) ? dxl / width : T(0);
+        return vec2(detail::clamp(u1, T(0), T(1)), detail::clamp(u2, T(0), T(1)));
+    }
+
+private:
+    /// The stopping rule of the inversions, relative to the area of the piece inverted.
+    static APSE_FUNC constexpr T tolerance() noexcept { return T(4) * epsilon<T>(); }
+
+    /// A first guess of x^(1/3) for x >= 0 (any finite value: the root finder refines it).
+    static APSE_FUNC T cbrt_guess(T x) noexcept {
+        return x > T(0x1p-100) ? detail::cube_root_approx(detail::min_of(x, T(0x1p100))) : T(0);
+    }
+
+    /// The visible width L at y = sin a sin theta, inside y_t (cos theta = ct, w = sqrt(1 − y^2)):
+    /// w − x_lo, x_lo = x0 − a' cos theta, as h^2/(w + x_lo) when x_lo > 0
+    /// (w^2 − x_lo^2 = h^2, h = cos a cos g + sin a sin g cos theta: no cancellation).
+    APSE_FUNC T inner_width(T ct, T w) const noexcept {
+        const T xlo = x0_ - ap_ * ct;
+        if (xlo > T(0)) {
+            const T h = ca_ * cg_ + sa_ * sg_ * ct;
+            return h * h / (w + xlo);
+        }
+        return w - xlo;
+    }
+
+    /// The projected area between y = 0 and y = sin a sin theta for theta in [0, theta_t]:
+    /// (y w + asin y)/2 − x0 y + a' b (theta + sin theta cos theta)/2, written as
+    /// y (1 − x0) + (asin y − y)/2 − y^3/(2 (1 + w)) + a' b (theta + sin theta cos theta)/2 (every
+    /// term but the last positive; the last too when the centre is above the horizon).
+    APSE_FUNC T inner_area(T th, T sth, T cth) const noexcept {
+        const T y = sa_ * sth, w = std::sqrt((T(1) - y) * (T(1) + y));
+        return y * one_minus_x0_ + T(0.5) * detail::asin_minus_identity(y) - T(0.5) * y * y * y / (T(1) + w) +
+               T(0.5) * ap_ * sa_ * (th + sth * cth);
+    }
+
+    SphericalEllipse<T> e_ = SphericalEllipse<T>::make_empty();  ///< the cap
+    vec3 c_{T(0), T(0), T(1)};   ///< the cap's centre (world)
+    vec3 e1_{T(1), T(0), T(0)};  ///< the tangent at the centre pointing away from the normal (world)
+    vec3 e2_{T(0), T(1), T(0)};  ///< c × e1 (world): the receiver frame's Y
+    vec3 n_{T(0), T(0), T(1)};   ///< the receiver's unit normal (world)
+    T sg_{}, cg_{};              ///< sin g, cos g: g the angle from the normal to the centre
+    T sa_{}, ca_{}, omca_{};     ///< sin a, cos a, 1 − cos a: a the cap's angular radius
+    T x0_{}, ap_{}, one_minus_x0_{};  ///< the projected ellipse's centre x0 = cos a sin g, semi-axis a' = sin a cos g, 1 − x0
+    T st_{}, ct_{}, theta_t_{};  ///< sin, cos of theta_t and theta_t (y_t = sin a sin theta_t)
+    T inner_{}, outer_{};        ///< the areas of y in [0, y_t] and [y_t, b] (half the visible region each side)
+    T half_{};                   ///< half the projected solid angle
+    T area_{};                   ///< the projected solid angle
+    T inv_area_{};               ///< 1 / area_
+    bool cut_ = false;           ///< the horizon cuts the cap
+    bool empty_ = true;
+};
+
+}  // namespace apse
