@@ -31,6 +31,7 @@
 //                  --benchmark_format=json > samplers.json
 //   python3 tools/bench_table.py samplers.json
 #include "support/disk_configs.hpp"
+#include "support/cone_sampler.hpp"
 #include "support/sphere_configs.hpp"
 
 #include <apse/baselines/area.hpp>
@@ -158,65 +159,18 @@ constexpr char cosine_tabulated_ld_radial_32[] = "cosine_tabulated_ld_radial_32_
 // --- sphere lights ---------------------------------------------------------------------------
 using apse_bench::SphereConfig;
 
-/// pbrt-v4's sampling of a sphere light from a point outside it, direction part
-/// (Sphere::Sample(ctx, u) and SampleUniformCone): sin^2 theta_max = r^2 / d^2, cos theta_max
-/// and 1 − cos theta_max (by its Taylor branch below sin^2 = 0.00068523, as pbrt), a frame around
-/// the centre direction built per shading point (Frame::FromZ: Duff et al. 2017's branchless
-/// basis), cos theta = 1 − u0 (1 − cos theta_max), phi = 2 pi u1; pdf 1 / (2 pi (1 − cos theta_max)).
-/// With `Point`, also the nearest point of the sphere along the direction and its distance (the
-/// shadow ray), by the same ray-sphere formula as SphereLight.
-template <class T, bool Point> class ConeSampler {
-public:
-    using vec2 = glm::vec<2, T>;
-    using vec3 = glm::vec<3, T>;
-    ConeSampler(const vec3& o, const vec3& c, T r) : o_(o), c_(c), r_(r) {
-        const vec3 d = c - o;
-        const T dist2 = glm::dot(d, d);
-        dist_ = std::sqrt(dist2);
-        z_ = d / dist_;
-        sin2_max_ = r * r / dist2;
-        const T cos_max = std::sqrt(std::max(T(0), T(1) - sin2_max_));
-        omc_ = sin2_max_ < T(0.00068523) ? sin2_max_ / 2 : T(1) - cos_max;
-        pdf_ = T(1) / (T(2) * apse::pi_v<T> * omc_);
-        const T sign = std::copysign(T(1), z_.z), a = T(-1) / (sign + z_.z), b = z_.x * z_.y * a;
-        x_ = vec3(T(1) + sign * z_.x * z_.x * a, sign * b, -sign * z_.x);
-        y_ = vec3(b, sign + z_.y * z_.y * a, -z_.y);
-    }
-    auto sample(const vec2& u) const {
-        T cos_t = T(1) - u.x * omc_, sin2_t = T(1) - cos_t * cos_t;
-        if (sin2_max_ < T(0.00068523)) {  // pbrt's small-cap branch
-            sin2_t = sin2_max_ * u.x;
-            cos_t = std::sqrt(T(1) - sin2_t);
-        }
-        const T sin_t = std::sqrt(std::max(T(0), sin2_t)), phi = T(2) * apse::pi_v<T> * u.y;
-        const vec3 w = (sin_t * std::cos(phi)) * x_ + (sin_t * std::sin(phi)) * y_ + cos_t * z_;
-        if constexpr (Point) {
-            const T t = apse::detail::sphere_hit_distance(c_ - o_, r_, T(1) / r_, dist_, w);
-            return apse::PointSample<T>{{w, pdf_}, o_ + t * w, t};
-        } else {
-            return apse::DirectionSample<T>{w, pdf_};
-        }
-    }
-
-private:
-    vec3 o_, c_;
-    T r_, dist_;
-    vec3 x_, y_, z_;
-    T sin2_max_, omc_, pdf_;
-};
-
 // Sphere factories: make(sphere, table view) builds the sampler for one shading point.
 struct SphereTag {};
 struct SphereCone : SphereTag {
     static constexpr const char* name = "sphere_cone";
     template <class T> static auto make(const SphereConfig<T>& s, const apse::TabulationView&) {
-        return ConeSampler<T, false>(s.o, s.c, s.r);
+        return apse_bench::ConeSampler<T, false>(s.o, s.c, s.r);
     }
 };
 struct SphereConePoint : SphereTag {
     static constexpr const char* name = "sphere_cone_point";
     template <class T> static auto make(const SphereConfig<T>& s, const apse::TabulationView&) {
-        return ConeSampler<T, true>(s.o, s.c, s.r);
+        return apse_bench::ConeSampler<T, true>(s.o, s.c, s.r);
     }
 };
 /// project_sphere + Map<T> (the tabulated maps take the table).
