@@ -11,8 +11,9 @@
 //   then a 1-D Gauss–Legendre quadrature over the polar angle split at the horizon's kink.
 // * the stratification gain: the estimator's variance with 16 independent samples over its
 //   variance with 16 jittered ones (both estimated from 8 repetitions), for a textured sphere
-//   (radiance 1 + s_x / 2 + |s|² / 2, s the direction's offset from the cap's centre in units of
-//   the cap's radius), so that no sampler has zero variance.
+//   (radiance 1 + (s·a) / 2 + (s·b)² / 2, s the direction's offset from the cap's centre in units
+//   of the cap's radius, a and b unit vectors across the cap at random azimuths: no symmetry any
+//   map is built on), so that no sampler has zero variance.
 #include "support/cone_sampler.hpp"
 #include "support/sphere_configs.hpp"
 
@@ -121,14 +122,17 @@ template <class T, class Make> Result<T> study(const Make& make) {
             const glm::dvec3 z = (cd - od) / dist;
             const double gamma = std::acos(std::max(-1.0, std::min(1.0, glm::dot(z, glm::normalize(nd)))));
             const double e_ref = irradiance_reference(alpha, gamma);
-            // the cap's own frame for the texture
+            // the texture: two directions across the cap at random azimuths
+            Rng rng{0x5eedULL + i * 7919 + std::uint64_t(cut) * 104729};
             const glm::dvec3 x = glm::normalize(glm::cross(z, std::fabs(z.x) < 0.9 ? glm::dvec3(1, 0, 0) : glm::dvec3(0, 1, 0)));
+            const glm::dvec3 y = glm::cross(z, x);
+            const double pa = 6.283185307179586 * rng.next(), pb = 6.283185307179586 * rng.next();
+            const glm::dvec3 ta = std::cos(pa) * x + std::sin(pa) * y, tb = std::cos(pb) * x + std::sin(pb) * y;
             auto texture = [&](const glm::dvec3& w) {
                 const glm::dvec3 off = (w - glm::dot(w, z) * z) / std::sin(alpha);
-                return 1 + 0.5 * glm::dot(off, x) + 0.5 * glm::dot(off, off);
+                return 1 + 0.5 * glm::dot(off, ta) + 0.5 * glm::dot(off, tb) * glm::dot(off, tb);
             };
             const auto sampler = make(s, normal, view);
-            Rng rng{0x5eedULL + i * 7919 + std::uint64_t(cut) * 104729};
             double e_sq = 0, tex_jit[reps], tex_ind[reps];
             for (int r = 0; r < reps; ++r) {
                 double e_jit = 0, t_jit = 0, t_ind = 0;
@@ -241,8 +245,8 @@ int main(int argc, char** argv) {
     std::fprintf(out,
                  "Variance with 16 independent samples / variance with 16 jittered ones (> 1: the sampler "
                  "keeps the strata), geometric mean over the receivers, for a textured sphere (radiance "
-                 "1 + s_x/2 + |s|²/2, s the offset from the cap's centre in cap radii) so that no sampler is "
-                 "exact; double.\n\n");
+                 "1 + (s·a)/2 + (s·b)²/2, s the offset from the cap's centre in cap radii, a and b unit vectors "
+                 "across the cap at random azimuths) so that no sampler is exact; double.\n\n");
     std::fprintf(out, "| sampler | cap above the horizon | cap cut by the horizon |\n|---|---:|---:|\n");
     for (const Row& r : rows) std::fprintf(out, "| %s | %.1f | %.1f |\n", r.name.c_str(), r.d.gain_above, r.d.gain_cut);
     if (out != stdout) std::fclose(out);
