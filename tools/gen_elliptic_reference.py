@@ -55,12 +55,15 @@ import argparse
 import math
 import os
 import random
-import struct
 import sys
 import time
 
 import mpmath
 from mpmath import mp, mpf
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import mp_reference  # noqa: E402
+from mp_reference import f32  # noqa: E402
 
 SEED = 20170619
 DPS = 40
@@ -77,17 +80,11 @@ mp.dps = DPS
 # float32 helpers
 # ---------------------------------------------------------------------------------------------
 
-def f32(x):
-    """Round a Python float to the nearest IEEE binary32 value (returned as a Python float)."""
-    return struct.unpack('<f', struct.pack('<f', float(x)))[0]
-
-
 def hexf(x):
-    x = float(x)
-    assert f32(x) == x, x
-    if x == 0.0:
-        return '0x0.0p+0'  # never -0.0
-    return x.hex()
+    """mp_reference.hexf, except that a zero is always written 0x0.0p+0 (never -0.0)."""
+    if float(x) == 0.0:
+        return '0x0.0p+0'
+    return mp_reference.hexf(x)
 
 
 F32_HALF_PI = f32(math.pi / 2)  # 0x1.921fb60000000p+0, slightly LARGER than pi/2
