@@ -25,9 +25,10 @@
 #include <apse/apse.hpp>
 #include <apse/baselines/area.hpp>
 
+#include "apse_plugin.hpp"
+
 #include <cmath>
 #include <string>
-#include <typeinfo>
 
 #include <mitsuba/core/properties.h>
 #include <mitsuba/core/warp.h>
@@ -40,27 +41,10 @@
 
 NAMESPACE_BEGIN(mitsuba)
 
-/// How the plugin samples directions towards the light.
-enum class ApseDiskSampler {
-    area, radial, ld_radial, parallel, tabulated_ld_radial, cosine_ld_radial, cosine_tabulated_ld_radial
-};
-
 namespace apse_disk_detail {
 
-using gvec2 = glm::vec<2, float>;
-using gvec3 = glm::vec<3, float>;
-
-inline ApseDiskSampler parse_sampler(const std::string &name) {
-    if (name == "area") return ApseDiskSampler::area;
-    if (name == "radial") return ApseDiskSampler::radial;
-    if (name == "ld_radial") return ApseDiskSampler::ld_radial;
-    if (name == "parallel") return ApseDiskSampler::parallel;
-    if (name == "tabulated_ld_radial") return ApseDiskSampler::tabulated_ld_radial;
-    if (name == "cosine_ld_radial") return ApseDiskSampler::cosine_ld_radial;
-    if (name == "cosine_tabulated_ld_radial") return ApseDiskSampler::cosine_tabulated_ld_radial;
-    Throw("apse_disk: unknown sampler \"%s\" (area, radial, ld_radial, parallel, "
-          "tabulated_ld_radial, cosine_ld_radial, cosine_tabulated_ld_radial)", name);
-}
+using apse_plugin::gvec2;
+using apse_plugin::gvec3;
 
 /// The light's geometry: the planar ellipse {center + s u + t v : s² + t² <= 1} (a disk of
 /// radius |u| when u and v are orthogonal and of equal length) and its emitting normal.
@@ -76,23 +60,12 @@ inline apse::SphericalEllipse<float> project(const Geometry &g, const gvec3 &o) 
                           : apse::project_ellipse(o, g.center, g.u, g.v);
 }
 
-/// The normal the cosine-weighted samplers weight by, from the receiver's geometric normal n
-/// (Mitsuba's Interaction3f::n: not oriented towards the viewer, zero for medium interactions).
-/// Which side of the surface gathers light depends on the BSDF (one- or two-sided, reflective or
-/// transmissive) and on the side it is seen from, which pdf_direction is not told (integrators
-/// pass it a plain Interaction3f holding p and n only). So: the light entirely on one side of
-/// the receiver's tangent plane -> n oriented towards it (whatever side gathers, the whole light
-/// is then above the horizon: the density is positive over all of it); the light straddling the
-/// plane (either side may be the one that gathers), or n zero or NaN -> zero, the plain map.
-/// The planar ellipse's signed heights above the plane span h ± e, h = n·(c − o),
-/// e = sqrt((n·u)² + (n·v)²). A function of o, n and the light only, so sample_direction and
-/// pdf_direction always pick the same density.
+/// The normal the cosine-weighted samplers weight by (apse_plugin::receiver_normal), from the
+/// receiver's geometric normal n: the planar ellipse's signed heights above the receiver's tangent
+/// plane span h ± e, h = n·(c − o), e = sqrt((n·u)² + (n·v)²).
 inline gvec3 receiver_normal(const Geometry &g, const gvec3 &o, const gvec3 &n) {
-    const float h = glm::dot(n, g.center - o), nu = glm::dot(n, g.u), nv = glm::dot(n, g.v);
-    const float e = std::sqrt(nu * nu + nv * nv);
-    if (h > e) return n;
-    if (-h > e) return -n;
-    return gvec3(0.f);
+    const float nu = glm::dot(n, g.u), nv = glm::dot(n, g.v);
+    return apse_plugin::receiver_normal(n, glm::dot(n, g.center - o), std::sqrt(nu * nu + nv * nv));
 }
 
 /// The one place that turns a sampler name into a sampler for the shading point o with the
@@ -100,41 +73,19 @@ inline gvec3 receiver_normal(const Geometry &g, const gvec3 &o, const gvec3 &n) 
 /// f(s) with s offering sample(u) -> apse::DirectionSample<float> and pdf(w) (solid angle), and
 /// returns its result. `area` (uniform by area) needs a disk (g.radius > 0).
 template <typename F>
-auto with_sampler(ApseDiskSampler kind, const Geometry &g, const gvec3 &o, const gvec3 &n, F &&f) {
-    using apse::CosineWeighted;
-    switch (kind) {
-        case ApseDiskSampler::area:
-            return f(apse::DiskAreaSampler<float>(o, g.frame));
-        case ApseDiskSampler::radial: return f(apse::RadialMap<float>(project(g, o)));
-        case ApseDiskSampler::parallel: return f(apse::ParallelMap<float>(project(g, o)));
-        case ApseDiskSampler::tabulated_ld_radial:
-            return f(apse::TabulatedLdRadialMap<float>(project(g, o), apse::default_table().view()));
-        case ApseDiskSampler::cosine_ld_radial:
-            return f(CosineWeighted<apse::LdRadialMap<float>>(apse::LdRadialMap<float>(project(g, o)),
-                                                              receiver_normal(g, o, n)));
-        case ApseDiskSampler::cosine_tabulated_ld_radial:
-            return f(CosineWeighted<apse::TabulatedLdRadialMap<float>>(
-                apse::TabulatedLdRadialMap<float>(project(g, o), apse::default_table().view()), receiver_normal(g, o, n)));
-        case ApseDiskSampler::ld_radial: break;
-    }
-    return f(apse::LdRadialMap<float>(project(g, o)));
+auto with_sampler(ApseSampler kind, const Geometry &g, const gvec3 &o, const gvec3 &n, F &&f) {
+    if (kind == ApseSampler::area) return f(apse::DiskAreaSampler<float>(o, g.frame));
+    return apse_plugin::with_map(kind, [&](auto map_type, auto cosine) {
+        using Map = typename decltype(map_type)::type;
+        return apse_plugin::with_map_args<Map>([&](const auto &...args) {
+            const Map map(project(g, o), args...);
+            if constexpr (decltype(cosine)::value)
+                return f(apse::CosineWeighted<Map>(map, receiver_normal(g, o, n)));
+            else
+                return f(map);
+        });
+    });
 }
-
-/// Reads the `to_world` parameter a shape exposes through traverse().
-template <typename Transform> class ToWorldReader final : public TraversalCallback {
-public:
-    bool found = false;
-    Transform value;
-
-protected:
-    void put_value(std::string_view name, void *ptr, uint32_t, const std::type_info &type) override {
-        if (name == "to_world" && type == typeid(Transform)) {
-            value = *static_cast<const Transform *>(ptr);
-            found = true;
-        }
-    }
-    void put_object(std::string_view, Object *, uint32_t) override {}
-};
 
 }  // namespace apse_disk_detail
 
@@ -154,7 +105,7 @@ public:
         if (m_radiance->is_spatially_varying())
             Throw("apse_disk: the radiance must be uniform (apse samples by solid angle)");
         m_twosided = props.get<bool>("twosided", false);
-        m_sampler = apse_disk_detail::parse_sampler(props.get<std::string>("sampler", "ld_radial"));
+        m_sampler = apse_plugin::parse_sampler(props.get<std::string>("sampler", "ld_radial"), "apse_disk");
         if (props.has_property("radius")) {
             const ScalarPoint3f c = props.get<ScalarPoint3f>("center");
             const ScalarVector3f n = props.get<ScalarVector3f>("normal");
@@ -175,7 +126,7 @@ public:
         Base::set_shape(shape);
         if (shape->shape_type() != +ShapeType::Disk)
             Throw("apse_disk: can only be attached to a 'disk' shape");
-        apse_disk_detail::ToWorldReader<ScalarAffineTransform4f> reader;
+        apse_plugin::ToWorldReader<ScalarAffineTransform4f> reader;
         shape->traverse(&reader);
         if (!reader.found) Throw("apse_disk: the disk shape did not expose its to_world");
         const ScalarAffineTransform4f &m = reader.value;
@@ -213,10 +164,10 @@ public:
             return { ds, dr::select(active, spec, 0.f) };
         }
         DirectionSample3f ds = dr::zeros<DirectionSample3f>();
-        const gvec3 o = to_glm(it.p);
+        const gvec3 o = apse_plugin::to_glm(it.p);
         if (!active || !lit(o)) return { ds, 0.f };
         const apse::DirectionSample<float> s = apse_disk_detail::with_sampler(
-            m_sampler, m_geom, o, to_glm(it.n), [&](const auto &sampler) { return sampler.sample(gvec2(sample.x(), sample.y())); });
+            m_sampler, m_geom, o, apse_plugin::to_glm(it.n), [&](const auto &sampler) { return sampler.sample(gvec2(sample.x(), sample.y())); });
         // Where the ray meets the light's plane: the point the visibility ray is traced to.
         const apse::PointSample<float> hit = apse::point_on_plane(s, o, m_geom.center, m_geom.normal);
         if (!(hit.pdf > 0.f)) return { ds, 0.f };
@@ -240,10 +191,10 @@ public:
             const Float value = m_shape->pdf_direction(it, ds, active);
             return dr::select(active, value, 0.f);
         }
-        const gvec3 o = to_glm(it.p);
+        const gvec3 o = apse_plugin::to_glm(it.p);
         if (!active || !lit(o)) return 0.f;
-        const gvec3 w = to_glm(ds.d);
-        return apse_disk_detail::with_sampler(m_sampler, m_geom, o, to_glm(it.n),
+        const gvec3 w = apse_plugin::to_glm(ds.d);
+        return apse_disk_detail::with_sampler(m_sampler, m_geom, o, apse_plugin::to_glm(it.n),
                                               [&](const auto &sampler) { return sampler.pdf(w); });
     }
 
@@ -311,10 +262,8 @@ public:
     }
 
     std::string to_string() const override {
-        static const char *names[] = { "area", "radial", "ld_radial", "parallel", "tabulated_ld_radial",
-                                       "cosine_ld_radial", "cosine_tabulated_ld_radial" };
         std::ostringstream oss;
-        oss << "ApseDiskLight[sampler = " << names[(int) m_sampler] << ", twosided = " << m_twosided
+        oss << "ApseDiskLight[sampler = " << apse_plugin::sampler_name(m_sampler) << ", twosided = " << m_twosided
             << ", center = " << m_center << ", normal = " << m_normal << ", ";
         if (m_geom.radius > 0.f) oss << "radius = " << m_geom.radius;
         else oss << "ellipse with semi-axes " << m_u << ", " << m_v;
@@ -326,14 +275,12 @@ public:
 
 private:
     /// Area sampling of an attached shape goes through the shape, exactly as Mitsuba's `area`.
-    bool use_shape_sampling() const { return m_sampler == ApseDiskSampler::area && m_shape; }
+    bool use_shape_sampling() const { return m_sampler == ApseSampler::area && m_shape; }
 
     /// Does the light emit towards o? (two-sided: always; else o strictly in front.)
     bool lit(const gvec3 &o) const {
         return m_twosided || apse::disk_faces(o, m_geom.center, m_geom.normal);
     }
-
-    template <typename V> static gvec3 to_glm(const V &p) { return gvec3(p.x(), p.y(), p.z()); }
 
     void set_geometry(const ScalarPoint3f &c, const ScalarVector3f &u, const ScalarVector3f &v,
                       const ScalarVector3f &n, ScalarFloat radius) {
@@ -341,10 +288,10 @@ private:
         m_u = u;
         m_v = v;
         m_normal = n;
-        m_geom.center = to_glm(c);
-        m_geom.u = to_glm(u);
-        m_geom.v = to_glm(v);
-        m_geom.normal = to_glm(n);
+        m_geom.center = apse_plugin::to_glm(c);
+        m_geom.u = apse_plugin::to_glm(u);
+        m_geom.v = apse_plugin::to_glm(v);
+        m_geom.normal = apse_plugin::to_glm(n);
         m_geom.radius = radius;
         m_geom.frame = apse::DiskFrame<float>::make(m_geom.center, m_geom.normal, radius);
     }
@@ -352,7 +299,7 @@ private:
     ref<Texture> m_radiance;
     bool m_twosided = false;
     bool m_standalone = false;
-    ApseDiskSampler m_sampler = ApseDiskSampler::ld_radial;
+    ApseSampler m_sampler = ApseSampler::ld_radial;
     apse_disk_detail::Geometry m_geom;
     ScalarPoint3f m_center;
     ScalarVector3f m_u, m_v, m_normal;

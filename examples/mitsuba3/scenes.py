@@ -2,6 +2,8 @@
 
     plane   : a disk light perpendicular to a diffuse ground plane (`path`)
     medium  : a disk light inside a box of homogeneous medium (`volpath`)
+    sphere  : a sphere light half-buried in a diffuse ground plane, in front of a diffuse wall
+              (`path`; sphere_scene_dict: Mitsuba's sphere + area light or apse_sphere)
     spheres : the authors' scene: three diffuse spheres of radius 2 on a plane, a two-sided disk
               light of radius 3 at (1, 3, 4) (`path`); seen from the side, because Mitsuba's
               lights are visible to camera rays and the demo's viewpoint looks through the light
@@ -109,6 +111,39 @@ def scene_dict(name, light, width=128, height=96, spp=16, sampler="stratified", 
             d["sphere%d" % i] = {"type": "sphere", "center": c, "radius": 2.0, "bsdf": diffuse}
     else:
         raise ValueError("unknown scene " + name)
+    if hide_emitters:
+        d["integrator"]["hide_emitters"] = True
+    return d
+
+
+def sphere_scene_dict(light, width=64, height=48, spp=16, sampler="stratified", seed=0, integrator="path",
+                      hide_emitters=False, standalone=False):
+    """The `sphere` scene lit by `light`: "mitsuba" (a sphere shape with Mitsuba's own `area`
+    emitter, which samples the cone the sphere subtends uniformly) or an apse_sphere sampler name
+    ("area" is the sphere shape's own sampling through apse_sphere, exactly Mitsuba's light).
+    A sphere of radius 0.8 and radiance 4 at (0, 0.5, 0) sinks 0.3 into the ground (y = 0), so
+    from every point of the ground it straddles the horizon (the cosine_* samplers use the plain
+    map there); a wall at z = -1, facing +z, 0.2 behind the sphere, sees all of it above its
+    horizon, close enough for the cosine to vary much across it. standalone=True: a standalone
+    apse_sphere (center, radius) and no sphere shape. With hide_emitters and `direct` that renders
+    the attached light's image (in expectation): Mitsuba 3.9.1 lets camera rays pass through
+    hidden emitters, and a convex light never hides its own samples; a black sphere left in its
+    place would not be passed through. Other arguments as scene_dict."""
+    center, radius = [0.0, 0.5, 0.0], 0.8
+    emitter = {"type": "area"} if light == "mitsuba" else {"type": "apse_sphere", "sampler": light}
+    emitter["radiance"] = {"type": "rgb", "value": 4.0}
+    ball = {"type": "sphere", "center": center, "radius": radius, "emitter": emitter,
+            "bsdf": {"type": "diffuse", "reflectance": {"type": "rgb", "value": 0.0}}}
+    d = {"type": "scene",
+         "integrator": _integrator(integrator, 3),
+         "sensor": _camera([0.6, 2.4, 4.5], [0.0, 0.4, -0.6], 55, width, height, spp, sampler, seed),
+         "ground": _ground(),
+         "wall": {"type": "rectangle", "to_world": T().translate([0.0, 0.0, -1.0]) @ T().scale(100),
+                  "bsdf": {"type": "diffuse", "reflectance": {"type": "rgb", "value": 0.8}}},
+         "light": ball}
+    if standalone:
+        del d["light"]
+        d["light_emitter"] = dict(emitter, center=mi.ScalarPoint3f(center), radius=radius)
     if hide_emitters:
         d["integrator"]["hide_emitters"] = True
     return d
