@@ -4,9 +4,9 @@
 
 /// @file apse.hpp
 /// The umbrella header: every public sampler and its building blocks — a disk light's stored
-/// frame, projection, the maps, the tabulated maps, cosine-weighted sampling, DiskLight, the
-/// spherical-rectangle sampler and the elliptic integrals. The baselines apse is measured against
-/// (uniform-by-area disk sampling, Gamito's rejection) are not included:
+/// frame, projection, the maps, the tabulated maps, cosine-weighted sampling, DiskLight,
+/// SphereLight, the spherical-rectangle sampler and the elliptic integrals. The baselines apse is
+/// measured against (uniform-by-area disk sampling, Gamito's rejection) are not included:
 /// `#include <apse/baselines/area.hpp>` / `<apse/baselines/gamito.hpp>` for them.
 
 #include "config.hpp"
@@ -24,3 +24,4 @@
 #include "projected_solid_angle.hpp"
 #include "cosine_weighted.hpp"
 #include "disk_light.hpp"
+#include "sphere_light.hpp"

@@ -218,6 +218,48 @@ __global__ void cosine_kernel(const T* in, T* out, float* table_rows, int n) {
     out[i] = s;
 }
 
+// Sphere lights (sphere_light.hpp) over every map, plain and cosine-weighted (the caps' closed
+// forms and ProjectedCapSampler), and the stateless pdf: a kernel of its own.
+template <class Sampler, class... Args>
+__device__ typename Sampler::vec3::value_type sphere_calls(typename Sampler::vec2 u, const Args&... args) {
+    using T = typename Sampler::vec3::value_type;
+    using V = typename Sampler::vec3;
+    const V o(T(0)), c(T(0.5), u.x, T(3));
+    const apse::SphereLight<Sampler> light(o, c, T(1), args...);
+    const auto s = light.sample(u);
+    return s.pdf + s.distance + s.point.x + light.pdf(s.direction) + light.invert(s.direction).x +
+           light.solid_angle() + T(light.empty() ? 1 : 0) + light.ellipse().tan_alpha +
+           T(light.ellipse().is_cap() ? 1 : 0) + apse::sphere_light_pdf<Sampler>(o, c, T(1), s.direction, args...);
+}
+
+template <class T>
+__global__ void sphere_kernel(const T* in, T* out, float* table_rows, int n) {
+    const int i = blockIdx.x * blockDim.x + threadIdx.x;
+    if (i >= n) return;
+    using V = glm::vec<3, T>;
+    const apse::TabulationView view{table_rows, 128, 17, 9};
+    const glm::vec<2, T> u(in[i], T(0.6));
+    const V rn(T(1), T(0), T(0.2));  // the receiver normal: the cap straddles its horizon
+    T s = T(0);
+    switch (i % 10) {
+    case 0: s += sphere_calls<apse::RadialMap<T>>(u); break;
+    case 1: s += sphere_calls<apse::LdRadialMap<T>>(u); break;
+    case 2: s += sphere_calls<apse::ParallelMap<T>>(u); break;
+    case 3: s += sphere_calls<apse::TabulatedMap<T>>(u, view); break;
+    case 4: s += sphere_calls<apse::TabulatedLdRadialMap<T>>(u, view); break;
+    case 5: s += sphere_calls<apse::CosineWeighted<apse::RadialMap<T>>>(u, rn); break;
+    case 6: s += sphere_calls<apse::CosineWeighted<apse::LdRadialMap<T>>>(u, rn); break;
+    case 7: s += sphere_calls<apse::CosineWeighted<apse::ParallelMap<T>>>(u, rn); break;
+    case 8: s += sphere_calls<apse::CosineWeighted<apse::TabulatedMap<T>>>(u, view, rn); break;
+    default: s += sphere_calls<apse::CosineWeighted<apse::TabulatedLdRadialMap<T>>>(u, view, rn); break;
+    }
+    // the projected-cap sampler on its own
+    const apse::ProjectedCapSampler<T> cap(apse::project_sphere(V(0), V(T(0.5), u.x, T(3)), T(1)), rn);
+    const auto p = cap.sample(u);
+    s += p.pdf + cap.pdf(p.direction) + cap.invert(p.direction).y + T(cap.empty() ? 1 : 0) + cap.projected_solid_angle();
+    out[i] = s;
+}
+
 template <class T>
 __global__ void all_public_functions(const T* in, T* out, int n) {
     const int i = blockIdx.x * blockDim.x + threadIdx.x;
@@ -238,8 +280,11 @@ int main() {
     void (*td)(const double*, double*, float*, int) = tabulated_kernel<double>;
     void (*cf)(const float*, float*, float*, int) = cosine_kernel<float>;
     void (*cd)(const double*, double*, float*, int) = cosine_kernel<double>;
+    void (*sf)(const float*, float*, float*, int) = sphere_kernel<float>;
+    void (*sd)(const double*, double*, float*, int) = sphere_kernel<double>;
     std::printf("tabulated kernels compiled: %p %p\n", reinterpret_cast<void*>(tf), reinterpret_cast<void*>(td));
     std::printf("cosine-weighted kernels compiled: %p %p\n", reinterpret_cast<void*>(cf), reinterpret_cast<void*>(cd));
+    std::printf("sphere-light kernels compiled: %p %p\n", reinterpret_cast<void*>(sf), reinterpret_cast<void*>(sd));
     std::printf("device kernels compiled: %p %p %p %p %p %p\n", reinterpret_cast<void*>(kf),
                 reinterpret_cast<void*>(kd), reinterpret_cast<void*>(mf), reinterpret_cast<void*>(md),
                 reinterpret_cast<void*>(pf), reinterpret_cast<void*>(pd));
