@@ -10,6 +10,10 @@
 /// measured and the numbers.
 ///
 /// How, by map:
+/// * every map, when its ellipse is a spherical cap (SphericalEllipse::is_cap()): the exact
+///   sampler of caps (ProjectedCapSampler, projected_cap.hpp), whatever the map — closed form
+///   above the horizon, a continuous map of the square onto the visible part when the horizon
+///   cuts the cap; the density is exactly max(0, n·ω) / Omega_perp;
 /// * the tabulated maps, while the ellipse's centre is above the horizon: a warp of the map's own
 ///   square (maps/tabulated_cosine.hpp) that reuses the map's sample — a piecewise-linear
 ///   marginal over its azimuth coordinate and a model of the cosine along each ray whose root is
@@ -27,6 +31,7 @@
 
 #include "config.hpp"
 #include "math.hpp"
+#include "projected_cap.hpp"
 #include "projected_solid_angle.hpp"
 #include "sample.hpp"
 #include "spherical_ellipse.hpp"
@@ -112,13 +117,20 @@ public:
     /// pdf 0. A zero, NaN or infinite normal: no weighting — the samples, pdf and invert of the
     /// plain map (`weighted()` is then false). A tabulated map uses the warp when the normal's
     /// component along the ellipse's axis exceeds 1e-3 of its largest component in the ellipse's
-    /// frame (the centre above the horizon), the exact sampler otherwise.
+    /// frame (the centre above the horizon), the exact sampler otherwise. A spherical cap
+    /// (`ellipse().is_cap()`), for every map: ProjectedCapSampler (empty() when the cap is
+    /// entirely below the horizon).
     APSE_FUNC CosineWeighted(const Map& map, const vec3& normal) noexcept
         : mode_(Mode::empty), base_(Traits::base(map)) {
         if (!Traits::valid(base_)) return;
         const T scale = detail::max_abs3(normal);
         if (!(scale > T(0)) || !detail::is_finite(scale) || !detail::finite3(normal)) {
             mode_ = Mode::plain;
+            return;
+        }
+        if (base_.ellipse().is_cap()) {
+            w_.cap = ProjectedCapSampler<T>(base_.ellipse(), normal);
+            if (!w_.cap.empty()) mode_ = Mode::cap;
             return;
         }
         if constexpr (Traits::tabulated) {
@@ -133,12 +145,28 @@ public:
         if (!w_.psa.empty()) mode_ = Mode::exact;
     }
 
+    /// CosineWeighted(Map(ellipse), normal): the sampler built from the light's ellipse directly,
+    /// for the maps built from an ellipse alone (RadialMap, LdRadialMap, ParallelMap).
+    template <class M = Map, std::enable_if_t<std::is_constructible<M, const SphericalEllipse<T>&>::value, int> = 0>
+    APSE_FUNC CosineWeighted(const SphericalEllipse<T>& ellipse, const vec3& receiver_normal) noexcept
+        : CosineWeighted(Map(ellipse), receiver_normal) {}
+
+    /// CosineWeighted(Map(ellipse, table), normal): the same for the tabulated maps
+    /// (TabulatedMap, TabulatedLdRadialMap), built from the ellipse and a table.
+    template <class M = Map, std::enable_if_t<std::is_constructible<M, const SphericalEllipse<T>&, const TabulationView&>::value, int> = 0>
+    APSE_FUNC CosineWeighted(const SphericalEllipse<T>& ellipse, const TabulationView& table, const vec3& receiver_normal) noexcept
+        : CosineWeighted(Map(ellipse, table), receiver_normal) {}
+
     /// True if the sampler cannot sample (empty map or light entirely below the horizon): every
     /// sample and pdf is then 0.
     APSE_FUNC bool empty() const noexcept { return mode_ == Mode::empty; }
 
     /// True if the samples are cosine-weighted (false for an empty sampler or a zero/NaN normal).
-    APSE_FUNC bool weighted() const noexcept { return mode_ == Mode::exact || mode_ == Mode::warped; }
+    APSE_FUNC bool weighted() const noexcept { return mode_ == Mode::exact || mode_ == Mode::warped || mode_ == Mode::cap; }
+
+    /// True if the samples come from ProjectedCapSampler (the ellipse is a cap and the normal
+    /// usable): their density is exactly max(0, n·ω) / Omega_perp.
+    APSE_FUNC bool exact_cap() const noexcept { return mode_ == Mode::cap; }
 
     /// The ellipse sampled.
     APSE_FUNC const SphericalEllipse<T>& ellipse() const noexcept { return base_.ellipse(); }
@@ -146,8 +174,8 @@ public:
     /// Direction for the point u of the unit square (clamped into [0, 1]^2): a world-space unit
     /// vector inside the ellipse, above the receiver's horizon when weighted(), with its exact
     /// density in solid angle (the warp's or ProjectedSolidAngleSampler's sample, after the
-    /// concentric map for the LD-radial maps). NaN u or empty(): pdf 0 and the ellipse's centre
-    /// direction.
+    /// concentric map for the LD-radial maps; ProjectedCapSampler's for a cap, u as it is, for
+    /// every map). NaN u or empty(): pdf 0 and the ellipse's centre direction.
     APSE_FUNC DirectionSample<T> sample(const vec2& u) const noexcept {
         if (mode_ == Mode::empty) return {base_.ellipse().z, T(0)};
         if (mode_ == Mode::plain) {  // the plain map's own sample
@@ -158,6 +186,7 @@ public:
                 return base_.sample(u);
             }
         }
+        if (mode_ == Mode::cap) return w_.cap.sample(u);
         bool ok = true;
         const vec2 uc = detail::clamp_unit(u, ok);
         if (!ok) return {base_.ellipse().z, T(0)};
@@ -183,6 +212,7 @@ public:
     APSE_FUNC T pdf(const vec3& d) const noexcept {
         if (mode_ == Mode::empty) return T(0);
         if (mode_ == Mode::exact) return w_.psa.pdf(d);
+        if (mode_ == Mode::cap) return w_.cap.pdf(d);
         if constexpr (Traits::tabulated) {
             if (mode_ == Mode::warped) {
                 vec3 l;
@@ -194,11 +224,13 @@ public:
     }
 
     /// The point of the unit square whose sample has direction `d` (the sampler's inverse, then
-    /// the concentric map's for the LD-radial maps). Outside the ellipse: clamped formulas.
+    /// the concentric map's for the LD-radial maps; ProjectedCapSampler's inverse for a cap).
+    /// Outside the ellipse: clamped formulas.
     /// Zero/NaN direction or empty(): (0, 0).
     APSE_FUNC vec2 invert(const vec3& d) const noexcept {
         vec3 l;
         if (mode_ == Mode::empty || !local(d, l)) return vec2(T(0));
+        if (mode_ == Mode::cap) return w_.cap.invert(d);
         vec2 v;
         if constexpr (Traits::tabulated) {
             if (mode_ == Mode::warped) v = w_.warp.invert(base_, l);
@@ -217,16 +249,17 @@ private:
         return ok;
     }
 
-    enum class Mode : int { empty, plain, exact, warped };  // exact: ProjectedSolidAngleSampler
+    enum class Mode : int { empty, plain, exact, warped, cap };  // exact: ProjectedSolidAngleSampler; cap: ProjectedCapSampler
     using Warp = std::conditional_t<Traits::tabulated, detail::TabulatedCosineWarp<T, Nodes>, detail::NoCosineWarp>;
     Mode mode_;
     Base base_;
-    /// The weighting in use (mode_): none, the exact sampler or the warp. A union: building a
+    /// The weighting in use (mode_): none, the exact sampler, the cap sampler or the warp. A union: building a
     /// CosineWeighted writes only the member it uses.
     union Weighting {
         APSE_FUNC Weighting() noexcept : none() {}
         detail::NoCosineWarp none;
         ProjectedSolidAngleSampler<T, Nodes> psa;
+        ProjectedCapSampler<T> cap;
         Warp warp;
     } w_;
 };

@@ -138,6 +138,8 @@ public:
         ap_ = sa * cg;
         // 1 − x0 = (1 − cos a) + cos a (1 − sin g), 1 − sin g = cos^2 g / (1 + sin g)
         one_minus_x0_ = omca_ + ca * (cg * cg / (T(1) + sg));
+        // 1 − sin(g − a) = cos^2(g − a)/(1 + sin(g − a)): the visible width at y = 0 when the centre is below
+        d0_ = cos_diff * cos_diff / (T(1) + (sg * ca - cg * sa));
         if (cos_sum >= T(0)) {  // above the horizon: the filled ellipse
             cut_ = false;
             area_ = pi_v<T> * sa * sa * cg;
@@ -355,10 +357,36 @@ private:
     /// (y w + asin y)/2 − x0 y + a' b (theta + sin theta cos theta)/2, written as
     /// y (1 − x0) + (asin y − y)/2 − y^3/(2 (1 + w)) + a' b (theta + sin theta cos theta)/2 (every
     /// term but the last positive; the last too when the centre is above the horizon).
+    /// With the centre below the horizon (a' < 0) the last term is negative and, as the visible
+    /// sliver vanishes, cancels the first; there the same area is evaluated as
+    /// y (1 − sin(g − a)) + |a'| b (sin theta (1 − cos theta) − (theta − sin theta))/2
+    ///   − (y^3/(2 (1 + w)) − (asin y − y)/2),
+    /// whose terms are smaller by the sliver's width (docs/math.md §14).
     APSE_FUNC T inner_area(T th, T sth, T cth) const noexcept {
         const T y = sa_ * sth, w = std::sqrt((T(1) - y) * (T(1) + y));
-        return y * one_minus_x0_ + T(0.5) * detail::asin_minus_identity(y) - T(0.5) * y * y * y / (T(1) + w) +
-               T(0.5) * ap_ * sa_ * (th + sth * cth);
+        const T circle = T(0.5) * y * y * y / (T(1) + w) - T(0.5) * detail::asin_minus_identity(y);  // ∫ (1 − w)
+        if (ap_ < T(0)) {
+            const T band = sth * (sth * sth / (T(1) + cth)) - angle_minus_sine(th, sth);
+            return y * d0_ - T(0.5) * ap_ * sa_ * band - circle;
+        }
+        return y * one_minus_x0_ - circle + T(0.5) * ap_ * sa_ * (th + sth * cth);
+    }
+
+    /// theta − sin theta for theta in [0, pi/2] (s = sin theta) without cancellation: its Taylor
+    /// series below 1/2 (the first term left out is below 1e-17 relative), the difference above.
+    static APSE_FUNC T angle_minus_sine(T th, T s) noexcept {
+        if (th < T(0.5)) {
+            const T t2 = th * th;
+            T p = T(1) - t2 * T(1.0 / 272.0);
+            p = T(1) - t2 * T(1.0 / 210.0) * p;
+            p = T(1) - t2 * T(1.0 / 156.0) * p;
+            p = T(1) - t2 * T(1.0 / 110.0) * p;
+            p = T(1) - t2 * T(1.0 / 72.0) * p;
+            p = T(1) - t2 * T(1.0 / 42.0) * p;
+            p = T(1) - t2 * T(1.0 / 20.0) * p;
+            return th * t2 * T(1.0 / 6.0) * p;
+        }
+        return th - s;
     }
 
     SphericalEllipse<T> e_ = SphericalEllipse<T>::make_empty();  ///< the cap
@@ -368,7 +396,7 @@ private:
     vec3 n_{T(0), T(0), T(1)};   ///< the receiver's unit normal (world)
     T sg_{}, cg_{};              ///< sin g, cos g: g the angle from the normal to the centre
     T sa_{}, ca_{}, omca_{};     ///< sin a, cos a, 1 − cos a: a the cap's angular radius
-    T x0_{}, ap_{}, one_minus_x0_{};  ///< the projected ellipse's centre x0 = cos a sin g, semi-axis a' = sin a cos g, 1 − x0
+    T x0_{}, ap_{}, one_minus_x0_{}, d0_{};  ///< the projected ellipse's centre x0 = cos a sin g, semi-axis a' = sin a cos g, 1 − x0, 1 − sin(g − a)
     T st_{}, ct_{}, theta_t_{};  ///< sin, cos of theta_t and theta_t (y_t = sin a sin theta_t)
     T inner_{}, outer_{};        ///< the areas of y in [0, y_t] and [y_t, b] (half the visible region each side)
     T half_{};                   ///< half the projected solid angle
