@@ -11,6 +11,7 @@
 
 #include "config.hpp"
 #include "detail/glm.hpp"
+#include "detail/pairs.hpp"
 #include "detail/symmetric_eigen.hpp"
 #include "detail/type_identity.hpp"
 #include "detail/vector.hpp"
@@ -180,7 +181,7 @@ APSE_FUNC SphericalEllipse<T> project_ellipse(const glm::vec<3, T>& o, const glm
 /// orthonormal basis). The result is an exact cap (SphericalEllipse::is_cap(): tan_alpha ==
 /// tan_beta), which every map samples in closed form. Every field comes from D, R and
 /// L = sqrt((D − R)(D + R)) directly: sin alpha = R/D, cos alpha = L/D, tan alpha = R/L,
-/// 1 − cos alpha = sin^2/(1 + cos), no cancellation; the scene is rescaled by an exact power of
+/// 1 − cos alpha = R^2/(D (D + L)), no cancellation; the scene is rescaled by an exact power of
 /// two only when its scale is extreme (outside [2^-100, 2^100] in double, [2^-16, 2^16] in
 /// float), so D^2 neither overflows nor underflows.
 /// Empty for o inside or on the sphere (documented choice: a point inside sees the emitter in
@@ -191,8 +192,8 @@ APSE_FUNC SphericalEllipse<T> project_ellipse(const glm::vec<3, T>& o, const glm
 /// inherits the rounding of center − o (relative error ~ eps D/(D − R)). T is deduced from the
 /// vectors alone (the radius converts to it, as in project_disk).
 template <class T>
-APSE_FUNC SphericalEllipse<T> project_sphere(const glm::vec<3, T>& o, const glm::vec<3, T>& center,
-                                             detail::type_identity_t<T> radius) noexcept {
+APSE_HOT_INLINE SphericalEllipse<T> project_sphere(const glm::vec<3, T>& o, const glm::vec<3, T>& center,
+                                                   detail::type_identity_t<T> radius) noexcept {
     using vec3 = glm::vec<3, T>;  ///< a 3-D vector (direction, point or normal)
     using E = SphericalEllipse<T>;
     const vec3 p0 = center - o;
@@ -206,25 +207,33 @@ APSE_FUNC SphericalEllipse<T> project_sphere(const glm::vec<3, T>& o, const glm:
         p = sc(p0);
         r = sc(T(radius));
     }
-    const T dist = std::sqrt(glm::dot(p, p));
-    if (!(dist > r)) return E::make_empty();
-    const T l = std::sqrt((dist - r) * (dist + r));
-    const T inv_d = T(1) / dist;
+    // D and L = sqrt(D^2 − R^2) by one paired square root (detail::sqrt2): D^2 − R^2 is as
+    // accurate as (D − R)(D + R) here, since D itself comes from the rounded D^2 (relative error
+    // of either ~eps D/(D − R) near the surface, ~2 eps far from it).
+    const T d2 = glm::dot(p, p), l2 = d2 - r * r;
+    if (!(l2 > T(0))) return E::make_empty();
+    T dist, l;
+    detail::sqrt2(d2, l2, dist, l);
+    // Duff, Burgess, Christensen, Hery, Kensler, Liani, Villemin, "Building an Orthonormal Basis,
+    // Revisited" (JCGT 2017), for z = p / D: right-handed, continuous except where z.z changes
+    // sign. Its divisor −1/(sign + z.z) = −D/(sign D + p.z) is paired with 1/D, and
+    // tan alpha = R/L with 1 − cos alpha = R^2/(D (D + L)) (the divisions paired: detail::div2).
+    const T sign = std::copysign(T(1), p.z);
+    T inv_d, a, tan_a, q;
+    detail::div2(T(1), dist, -dist, sign * dist + p.z, inv_d, a);
+    detail::div2(r, l, r, dist * (dist + l), tan_a, q);  // (R q, not R^2 / ...: R^2 may be subnormal)
+    const T omc = r * q;
     E e;
     e.z = p * inv_d;
-    // Duff, Burgess, Christensen, Hery, Kensler, Liani, Villemin, "Building an Orthonormal Basis,
-    // Revisited" (JCGT 2017): right-handed, continuous except at z.z = 0's sign flip.
-    const T sign = std::copysign(T(1), e.z.z);
-    const T a = T(-1) / (sign + e.z.z), b = e.z.x * e.z.y * a;
+    const T b = e.z.x * e.z.y * a;
     e.x = vec3(T(1) + sign * e.z.x * e.z.x * a, sign * b, -sign * e.z.x);
     e.y = vec3(b, sign + e.z.y * e.z.y * a, -e.z.y);
-    const T tan_a = r / l;
     if (!(tan_a >= detail::tan_min<T>() && tan_a <= detail::tan_cap<T>()))
         return E::from_tangents(e.x, e.y, e.z, tan_a, tan_a);  // empty, or capped at tan_cap
     e.tan_alpha = e.tan_beta = tan_a;
     e.sin_alpha = e.sin_beta = r * inv_d;
     e.cos_alpha = e.cos_beta = l * inv_d;
-    e.one_minus_cos_alpha = e.one_minus_cos_beta = e.sin_alpha * e.sin_alpha / (T(1) + e.cos_alpha);
+    e.one_minus_cos_alpha = e.one_minus_cos_beta = omc;
     e.m = T(0);
     e.one_minus_m = T(1);
     return e;

@@ -117,6 +117,11 @@ template <class T> struct EllipseAreas : EllipseAxes<T> {
         k.a2_minus_b2 = (k.a - k.b) * (k.a + k.b);
         k.tb2 = e.tan_beta * e.tan_beta;
         k.m = e.m;
+        if (e.is_cap()) {  // b = a, cos beta = cos alpha: the same constants without a division
+            k.k1 = k.a2 * k.ca * T(1.0 / 3.0);
+            k.cb_over_ca2 = k.ba = k.ba2 = T(1);
+            return k;
+        }
         k.k1 = k.ab * k.cb2 / (T(3) * k.ca);
         k.cb_over_ca2 = sqr(k.cb / k.ca);
         k.ba = k.a > T(0) ? k.b / k.a : T(0);

@@ -73,7 +73,7 @@ public:
     using vec3 = glm::vec<3, T>;  ///< a 3-D vector (direction, point or normal)
 
     /// Builds the map for `ellipse` (empty allowed: every sample then has pdf 0).
-    APSE_FUNC explicit LdRadialMap(const SphericalEllipse<T>& ellipse) noexcept : radial_(ellipse) {}
+    APSE_HOT_INLINE explicit LdRadialMap(const SphericalEllipse<T>& ellipse) noexcept : radial_(ellipse) {}
 
     /// The ellipse this map samples.
     APSE_FUNC const SphericalEllipse<T>& ellipse() const noexcept { return radial_.ellipse(); }

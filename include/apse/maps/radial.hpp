@@ -143,7 +143,7 @@ public:
 
     /// Builds the map for `ellipse` (any SphericalEllipse, empty included: then every sample has
     /// pdf 0).
-    APSE_FUNC explicit RadialMap(const SphericalEllipse<T>& ellipse) noexcept
+    APSE_HOT_INLINE explicit RadialMap(const SphericalEllipse<T>& ellipse) noexcept
         : ellipse_(ellipse), areas_(detail::EllipseAreas<T>::make(ellipse)), cap_(ellipse.is_cap()) {
         omega_ = cap_ ? two_pi_v<T> * ellipse.one_minus_cos_alpha : detail::solid_angle_of(ellipse);
         valid_ = !ellipse.empty() && omega_ > T(0) && detail::is_finite(omega_);
@@ -151,8 +151,9 @@ public:
         quarter_ = T(0.25) * omega_;
         // Lambert guess: the equal-area image of a small ellipse has semi-axes 2 sin(alpha/2),
         // 2 sin(beta/2); in tau this is tan tau = kappa tan(f pi/2), kappa = cos(alpha/2)/cos(beta/2).
-        kappa_ = std::sqrt((T(1) + areas_.ca) / (T(1) + areas_.cb));
-        singular_im2_ = detail::RadialAreaModel<T>::singular_distance_sq(areas_);
+        // (a cap: kappa = 1 and no singularity near the bracket, without a division)
+        kappa_ = cap_ ? T(1) : std::sqrt((T(1) + areas_.ca) / (T(1) + areas_.cb));
+        singular_im2_ = cap_ ? T(1) : detail::RadialAreaModel<T>::singular_distance_sq(areas_);
     }
 
     /// The ellipse this map samples.

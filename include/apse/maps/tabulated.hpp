@@ -69,7 +69,7 @@ public:
     /// constants, kappa, the four blended rows and their weights; a paired square root and a few
     /// divisions).
     /// An empty ellipse or an invalid view gives an empty map (every sample has pdf 0).
-    APSE_FUNC TabulatedMap(const SphericalEllipse<T>& ellipse, const TabulationView& table) noexcept
+    APSE_HOT_INLINE TabulatedMap(const SphericalEllipse<T>& ellipse, const TabulationView& table) noexcept
         : ellipse_(ellipse), axes_(detail::EllipseAxes<T>::make(ellipse)), bins_(table.bins) {
         for (int r = 0; r < 4; ++r) { rows_[r] = table.cdf; weights_[r] = T(0); }
         valid_ = !ellipse.empty() && table.cdf != nullptr && table.bins >= 1 && table.alpha_nodes >= 2 &&
@@ -77,13 +77,14 @@ public:
         // a cap's azimuthal CDF is exactly linear: sample() draws it exactly, density 1/Omega
         cap_ = ellipse.is_cap();
         cap_inv_omega_ = cap_ ? T(1) / (two_pi_v<T> * ellipse.one_minus_cos_alpha) : T(0);
-        // kappa^2 = (1 + cos alpha)/(1 + cos beta) and its inverse, paired; then kappa and
-        // sqrt(cos alpha), paired
-        T inv_kappa2, sqrt_ca;
-        detail::div2(T(1) + axes_.ca, T(1) + axes_.cb, T(1) + axes_.cb, T(1) + axes_.ca, kappa2_, inv_kappa2);
+        // kappa^2 = (1 + cos alpha)/(1 + cos beta) and its inverse, paired (1 for a cap); then
+        // kappa and sqrt(cos alpha), paired
+        T inv_kappa2 = T(1), sqrt_ca;
+        kappa2_ = T(1);
+        if (!cap_) detail::div2(T(1) + axes_.ca, T(1) + axes_.cb, T(1) + axes_.cb, T(1) + axes_.ca, kappa2_, inv_kappa2);
         detail::sqrt2(kappa2_, axes_.ca, kappa_, sqrt_ca);
-        bin_width_ = half_pi_v<T> / T(bins_ > 0 ? bins_ : 1);
-        inv_bins_ = T(1) / T(bins_ > 0 ? bins_ : 1);
+        const T nb = T(bins_ > 0 ? bins_ : 1);
+        detail::div2(half_pi_v<T>, nb, T(1), nb, bin_width_, inv_bins_);
         pdf_scale_ = T(0);
         ba_ = T(0);
         if (!valid_) return;
@@ -101,7 +102,7 @@ public:
         // within 1e-7: it only chooses the rows blended, and any blend is exact for the sampler).
         // (a valid ellipse's values: no NaN, so a max and a min clamp them, without branches)
         const T fx = detail::clamp_non_nan(T(1) - sqrt_ca, T(0), T(1)) * T(table.alpha_nodes - 1);
-        const T ratio = detail::arc_ratio(axes_.a, axes_.ca, axes_.b, axes_.cb);
+        const T ratio = cap_ ? T(1) : detail::arc_ratio(axes_.a, axes_.ca, axes_.b, axes_.cb);
         const T fy = detail::clamp_non_nan(ratio, T(0), T(1)) * T(table.ratio_nodes - 1);
         int i = int(fx), j = int(fy);
         if (i > table.alpha_nodes - 2) i = table.alpha_nodes - 2;
@@ -356,7 +357,7 @@ public:
     using vec3 = glm::vec<3, T>;  ///< a 3-D vector (direction, point or normal)
 
     /// Builds the map (as TabulatedMap; empty ellipse or invalid view: pdf 0 everywhere).
-    APSE_FUNC TabulatedLdRadialMap(const SphericalEllipse<T>& ellipse, const TabulationView& table) noexcept
+    APSE_HOT_INLINE TabulatedLdRadialMap(const SphericalEllipse<T>& ellipse, const TabulationView& table) noexcept
         : radial_(ellipse, table) {}
 
     /// The ellipse this map samples.
