@@ -24,7 +24,6 @@
 // bit; it needs the shape.
 
 #include <apse/apse.hpp>
-#include <apse/sphere_light.hpp>
 
 #include "apse_plugin.hpp"
 
@@ -55,14 +54,6 @@ inline gvec3 receiver_normal(const gvec3 &c, float r, const gvec3 &o, const gvec
     return apse_plugin::receiver_normal(n, glm::dot(n, c - o), r * glm::length(n));
 }
 
-/// apse::CosineWeighted<Map> built, as SphereLight builds its sampler, from the cap and its
-/// arguments: the receiver normal, then what Map takes after its ellipse.
-template <class Map> struct CosineOnCap : apse::CosineWeighted<Map> {
-    template <class... A>
-    CosineOnCap(const apse::SphericalEllipse<float> &cap, const gvec3 &n, const A &...map_args) noexcept
-        : apse::CosineWeighted<Map>(Map(cap, map_args...), n) {}
-};
-
 /// The one place that turns a sampler name (any but `area`) into the sampler of
 /// apse::SphereLight for the shading point o with the geometric normal n (used by the cosine_*
 /// samplers only, through receiver_normal): calls f(apse_plugin::MapType<Sampler>{}, args...)
@@ -74,7 +65,7 @@ auto with_sampler(ApseSampler kind, const gvec3 &c, float r, const gvec3 &o, con
         using Map = typename decltype(map_type)::type;
         return apse_plugin::with_map_args<Map>([&](const auto &...args) {
             if constexpr (decltype(cosine)::value)
-                return f(apse_plugin::MapType<CosineOnCap<Map>>{}, receiver_normal(c, r, o, n), args...);
+                return f(apse_plugin::MapType<apse::CosineWeighted<Map>>{}, args..., receiver_normal(c, r, o, n));
             else
                 return f(map_type, args...);
         });
