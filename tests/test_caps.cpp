@@ -376,7 +376,7 @@ TEMPLATE_TEST_CASE("caps: circles under rounding are exact caps", "[caps][projec
     using T = TestType;
     // A disk seen along its axis, a circle (project_ellipse) on its axis and a sphere given to
     // project_ellipsoid are circular cones; their tangents come out within a few eps of each
-    // other and are made exactly equal (docs/math.md §2, Caps under rounding). The effect on the
+    // other and are made exactly equal (docs/math.md §2b, Caps under rounding). The effect on the
     // pdf is bounded by the snap threshold: 1/Omega within 8 eps (+ the projections' own
     // rounding, 8 eps) of the long double closed form 1/(2 pi (1 − cos atan(r/d))).
     apse_test::Rng rng(sizeof(T) * 977);

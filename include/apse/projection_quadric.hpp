@@ -82,7 +82,7 @@ APSE_FUNC SphericalEllipse<T> ellipse_of_cone(const Sym3<T>& c, const Sym3<T>& c
     const T tan_alpha = std::sqrt(-l3 / l2);
     // A circular cone (a circle seen along its axis, a sphere) comes out of the eigen-solver
     // with tangents a few ulps apart (<= 5 eps, measured): within 8 eps they are made exactly
-    // equal, an exact cap that the maps sample in closed form (docs/math.md §2, Caps under
+    // equal, an exact cap that the maps sample in closed form (docs/math.md §2b, Caps under
     // rounding). The shape moves by at most 8 eps, the solid angle and pdf by at most 8 eps
     // relative: below the eigen-solver's own error.
     const T tan_beta_raw = std::sqrt(-l3 / l1);
@@ -111,7 +111,8 @@ APSE_FUNC bool ellipse_faces(const glm::vec<3, T>& o, const glm::vec<3, T>& cent
 /// {center + s U + t V : s² + t² <= 1} (U = semi_axis_u, V = semi_axis_v), docs/math.md §2b.
 /// U and V need not be orthogonal: any two non-parallel vectors (conjugate semi-diameters)
 /// define an ellipse; orthogonal ones are its semi-axes. A disk is U = r e1, V = r e2 and gives
-/// project_disk's ellipse (to rounding). Method: the cone matrix is built in the plane's frame
+/// project_disk's ellipse (to rounding); a circle seen along its axis gives an exact cap
+/// (tangents within 8 eps of each other are made equal, docs/math.md §2b). Method: the cone matrix is built in the plane's frame
 /// ([[d² S, −d S c], [−d cᵀS, cᵀS c − det²]]); its largest-|l| eigenpair comes from a Jacobi
 /// iteration on it, the smallest from the inverse cone [U V p] J [U V p]ᵀ, the middle one from
 /// the exact determinant (detail::ellipse_of_cone), so thin ellipses, far lights and points near
@@ -245,7 +246,9 @@ APSE_HOT_INLINE SphericalEllipse<T> project_sphere(const glm::vec<3, T>& o, cons
 /// ellipsoid's principal frame, without cancelling terms, together with its inverse (the dual
 /// quadric diag(a_i²) − q qᵀ) and its exact determinant (detail::ellipse_of_cone): accurate for
 /// far, near, pancake and needle ellipsoids alike. Cost: two 3×3 Jacobi solves (~1 µs).
-/// A sphere (three equal orthogonal axes) gives project_sphere's cap.
+/// A sphere (three equal orthogonal axes) gives project_sphere's cap, an exact one
+/// (SphericalEllipse::is_cap(): tangents within 8 eps of each other are made equal, docs/math.md
+/// §2b "Caps under rounding"; as for a circle given to project_ellipse on its axis).
 /// Measure: solid angle. Accuracy: docs/projection.md (double ~1e-15, float ~1e-6 when the
 /// input is well conditioned).
 /// Domain: the three axes mutually orthogonal (to within |cos| <= 1e-3; the frame is then
