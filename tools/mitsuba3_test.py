@@ -406,7 +406,7 @@ def check_sphere_relmse(plugin_dir):
     for the cosine_* samplers, the weighting). Printed for the whole image and for the pixels
     that see only the ground (the light straddles their horizon: the cosine_* samplers are the
     plain map there) or only the wall (the light above their horizon), told apart by the
-    geometric normal (the `aov` integrator). Time: CPU time of the render, the smallest of 3,
+    geometric normal (the `aov` integrator). Time: CPU time of the render, the smallest of 5,
     noisy on a shared machine: printed, never tested. Limits, from the measured ratios (whole
     image: radial 0.91, the other plain maps 0.63-0.64, the cosine-weighted ones 0.59; on the
     wall the cosine-weighted ones 0.51x the plain LD-radial map's) with room for changes of the
@@ -431,7 +431,7 @@ def check_sphere_relmse(plugin_dir):
 
     results = {}
     for light in ("mitsuba",) + scenes.APSE_SAMPLERS:
-        img, t = timed_render(mi.load_dict(scenes.sphere_scene_dict(light, w, h, 16, **kw)), 16, 0, 3)
+        img, t = timed_render(mi.load_dict(scenes.sphere_scene_dict(light, w, h, 16, **kw)), 16, 0, 5)
         results[light] = (rel_mse(img), t)
     (base, base_t), ld_wall = results["mitsuba"], results["ld_radial"][0]["wall"]
     log("relmse  sphere direct 16 spp stratified: mitsuba %.3e (ground %.3e, wall %.3e; %d / %d pixels), "
