@@ -305,7 +305,7 @@ TEMPLATE_TEST_CASE("projected cap: pdf(sample) is the reported pdf, sample(inver
             const auto back = s.sample(v);
             // the direction again, to the direction's rounding (a few eps of T absolute, so
             // 8 eps / sin a relative to the cap's radius) amplified where the map compresses (tips
-            // of the visible region): measured below 2.4e-3 (float, tiny cap) of the radius
+            // of the visible region): measured below 1.3e-3 of the radius plus that (float)
             const double dist = glm::length(glm::dvec3(back.direction) - glm::dvec3(d.direction)) / sa;
             worst_dir = std::max(worst_dir, dist);
             // away from the region's tips (where its width vanishes) u itself comes back
@@ -313,7 +313,7 @@ TEMPLATE_TEST_CASE("projected cap: pdf(sample) is the reported pdf, sample(inver
         }
         INFO(type_name<T>() << " " << c.name << ": pdf " << worst_pdf << ", direction " << worst_dir << ", u " << worst_u);
         CHECK(worst_pdf <= 1);
-        CHECK(worst_dir <= 8 * eps<T>() / sa + (sizeof(T) == 4 ? 1e-3 : 1e-9));
+        CHECK(worst_dir <= 8 * eps<T>() / sa + (sizeof(T) == 4 ? 2e-3 : 1e-9));
         if (std::string(c.name).find("sliver") == std::string::npos) CHECK(worst_u <= (sizeof(T) == 4 ? 2e-2 : 1e-7));
     }
 }

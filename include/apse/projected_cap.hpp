@@ -39,10 +39,12 @@
 namespace apse {
 namespace detail {
 
-/// asin(y) − y for y in [0, 1] without cancellation: y^3 times the Maclaurin series of
-/// (asin y − y)/y^3 below y = 1/4 (13 terms: the first left out is below 2e-17 relative), the
-/// difference above (where it is at least y^3/6: it loses at most a factor 6 of eps there).
-template <class T> APSE_FUNC T asin_minus_identity(T y) noexcept {
+/// asin(y) − y for y in [0, 1] given w = sqrt(1 − y^2), without cancellation: y^3 times the
+/// Maclaurin series of (asin y − y)/y^3 below y = 1/4 (13 terms: the first left out is below
+/// 2e-17 relative), the difference above (at least y^3/6 there: it loses at most a factor 6 of
+/// the arcsine's error) with the library's asin (`Precise`, to half an ulp) or atan2(y, w) by
+/// polynomials (angle_of, to a few ulps: the sampling path).
+template <bool Precise, class T> APSE_FUNC T asin_minus_identity(T y, T w) noexcept {
     if (y < T(0.25)) {
         const T y2 = y * y;
         T p = T(1300075.0 / 226492416.0);
@@ -60,7 +62,8 @@ template <class T> APSE_FUNC T asin_minus_identity(T y) noexcept {
         p = T(1.0 / 6.0) + y2 * p;
         return y * y2 * p;
     }
-    return std::asin(min_of(y, T(1))) - y;
+    if constexpr (Precise) return std::asin(min_of(y, T(1))) - y;
+    else return angle_of(y, w) - y;
 }
 
 /// x − sin x cos x for x in [0, pi/2] given s = sin x, c = cos x, without cancellation: the
@@ -117,9 +120,11 @@ public:
         const vec3 n = detail::normalize_direction(receiver_normal * (T(1) / scale), ok);
         if (!ok) return;
         const vec3 nl = cap.to_local(n);
-        const T sg = detail::hypot2(nl.x, nl.y), cg = nl.z;
+        // n is unit: no overflow; a sin g below ~1e-154 (double) underflows to 0, i.e. n ∥ c
+        const T sg = std::sqrt(nl.x * nl.x + nl.y * nl.y), cg = nl.z;
         // e1: the unit tangent at the centre pointing away from n (any one when n ∥ c), e2 = c × e1
-        const T e1x = sg > T(0) ? -nl.x / sg : T(1), e1y = sg > T(0) ? -nl.y / sg : T(0);
+        const T inv_sg = sg > T(0) ? T(1) / sg : T(0);
+        const T e1x = sg > T(0) ? -nl.x * inv_sg : T(1), e1y = -nl.y * inv_sg;
         const T sa = cap.sin_alpha, ca = cap.cos_alpha;
         const T cos_sum = cg * ca - sg * sa;   // cos(g + a): the rim's lowest point's height
         const T cos_diff = cg * ca + sg * sa;  // cos(g − a): its highest point's height
@@ -136,24 +141,26 @@ public:
         omca_ = cap.one_minus_cos_alpha;
         x0_ = ca * sg;
         ap_ = sa * cg;
-        // 1 − x0 = (1 − cos a) + cos a (1 − sin g), 1 − sin g = cos^2 g / (1 + sin g)
-        one_minus_x0_ = omca_ + ca * (cg * cg / (T(1) + sg));
-        // 1 − sin(g − a) = cos^2(g − a)/(1 + sin(g − a)): the visible width at y = 0 when the centre is below
-        d0_ = cos_diff * cos_diff / (T(1) + (sg * ca - cg * sa));
         if (cos_sum >= T(0)) {  // above the horizon: the filled ellipse
             cut_ = false;
             area_ = pi_v<T> * sa * sa * cg;
             half_ = T(0.5) * area_;
         } else {
             cut_ = true;
+            if (cg >= T(0)) {  // 1 − x0 = (1 − cos a) + cos a (1 − sin g), 1 − sin g = cos^2 g / (1 + sin g)
+                one_minus_x0_ = omca_ + ca * (cg * cg / (T(1) + sg));
+            } else {  // 1 − sin(g − a) = cos^2(g − a)/(1 + sin(g − a)): the visible width at y = 0
+                d0_ = cos_diff * cos_diff / (T(1) + (sg * ca - cg * sa));
+            }
             // the rim meets the horizon at y_t = sin a sin theta_t, with
             // sin theta_t = sqrt(−cos(g + a) cos(g − a)) / (sin a sin g), cos theta_t = |cos a cos g| / (sin a sin g)
             const T st = std::sqrt(-cos_sum * cos_diff), ct = std::fabs(ca * cg);
             const T len = detail::hypot2(st, ct);
             st_ = st / len;
             ct_ = ct / len;
-            theta_t_ = std::atan2(st_, ct_);
-            inner_ = inner_area(theta_t_, st_, ct_);
+            theta_t_ = detail::angle_of(st_, ct_);
+            const T yt = sa * st_;
+            inner_ = inner_area<true>(theta_t_, st_, ct_, std::sqrt((T(1) - yt) * (T(1) + yt)));
             // beyond theta_t (centre above the horizon only): the ellipse's own band,
             // a' b (x − sin x cos x) from its top, x = pi/2 − theta
             outer_ = cg > T(0) ? ap_ * sa * detail::cap_angle_minus_sin_cos(half_pi_v<T> - theta_t_, ct_, st_) : T(0);
@@ -247,14 +254,19 @@ public:
                 sth = sc.s;
                 cth = sc.c;
                 const T yy = sa_ * sth, w = std::sqrt((T(1) - yy) * (T(1) + yy));
-                value = inner_area(th, sth, cth) - target;
+                value = inner_area<false>(th, sth, cth, w) - target;
                 const T lw = inner_width(cth, w);
                 const T f1 = lw * sa_ * cth;
                 const T dl = -yy * sa_ * cth / w - ap_ * sth;
                 const T f2 = dl * sa_ * cth - lw * sa_ * sth;
                 derivative = f1 > T(0) ? f1 - value * f2 / (T(2) * f1) : f1;
             };
-            const T guess = inner_ > T(0) ? theta_t_ * (target / inner_) : T(0);
+            // first guess: linear in theta, blended (as cos g falls from 0.1 to 0) into the
+            // cubic tip of the region where its width vanishes like (theta_t − theta)^2
+            const T q = inner_ > T(0) ? detail::min_of(target / inner_, T(1)) : T(0);
+            const T linear = theta_t_ * q;
+            const T blend = detail::clamp_non_nan(T(1) - T(10) * cg_, T(0), T(1));
+            const T guess = blend > T(0) ? linear + blend * (theta_t_ * (T(1) - cbrt_guess(T(1) - q)) - linear) : linear;
             detail::find_root_bracketed(eval, T(0), theta_t_, guess, tolerance() * inner_, 40);
             s_th = sth;
             c_th = cth;
@@ -324,7 +336,7 @@ public:
             width = T(2) * ap_ * cth;
         } else {
             const T yy = sa_ * sth, w = std::sqrt((T(1) - yy) * (T(1) + yy));
-            below = inner_area(detail::min_of(th, theta_t_), sth, cth);
+            below = inner_area<false>(detail::min_of(th, theta_t_), sth, cth, w);
             width = inner_width(cth, w);
         }
         const T u1 = T(0.5) + (q < T(0) ? T(-0.5) : T(0.5)) * (below / half_);
@@ -333,8 +345,10 @@ public:
     }
 
 private:
-    /// The stopping rule of the inversions, relative to the area of the piece inverted.
-    static APSE_FUNC constexpr T tolerance() noexcept { return T(4) * epsilon<T>(); }
+    /// The stopping rule of the inversions, relative to the area of the piece inverted: 16 eps of
+    /// T, above the rounding of the area evaluated per step (a few eps; a tighter rule would only
+    /// make the last steps chase rounding).
+    static APSE_FUNC constexpr T tolerance() noexcept { return T(16) * epsilon<T>(); }
 
     /// A first guess of x^(1/3) for x >= 0 (any finite value: the root finder refines it).
     static APSE_FUNC T cbrt_guess(T x) noexcept {
@@ -353,7 +367,8 @@ private:
         return w - xlo;
     }
 
-    /// The projected area between y = 0 and y = sin a sin theta for theta in [0, theta_t]:
+    /// The projected area between y = 0 and y = sin a sin theta for theta in [0, theta_t]
+    /// (w = sqrt(1 − y^2)):
     /// (y w + asin y)/2 − x0 y + a' b (theta + sin theta cos theta)/2, written as
     /// y (1 − x0) + (asin y − y)/2 − y^3/(2 (1 + w)) + a' b (theta + sin theta cos theta)/2 (every
     /// term but the last positive; the last too when the centre is above the horizon).
@@ -362,10 +377,10 @@ private:
     /// y (1 − sin(g − a)) + |a'| b (sin theta (1 − cos theta) − (theta − sin theta))/2
     ///   − (y^3/(2 (1 + w)) − (asin y − y)/2),
     /// whose terms are smaller by the sliver's width (docs/math.md §14).
-    APSE_FUNC T inner_area(T th, T sth, T cth) const noexcept {
-        const T y = sa_ * sth, w = std::sqrt((T(1) - y) * (T(1) + y));
-        const T circle = T(0.5) * y * y * y / (T(1) + w) - T(0.5) * detail::asin_minus_identity(y);  // ∫ (1 − w)
-        if (ap_ < T(0)) {
+    template <bool Precise> APSE_FUNC T inner_area(T th, T sth, T cth, T w) const noexcept {
+        const T y = sa_ * sth;
+        const T circle = T(0.5) * y * y * y / (T(1) + w) - T(0.5) * detail::asin_minus_identity<Precise>(y, w);  // ∫ (1 − w)
+        if (cg_ < T(0)) {
             const T band = sth * (sth * sth / (T(1) + cth)) - angle_minus_sine(th, sth);
             return y * d0_ - T(0.5) * ap_ * sa_ * band - circle;
         }
