@@ -116,11 +116,14 @@ Canvas convergence_plot(const std::vector<std::pair<std::string, std::vector<Ser
                 if (s.y[i] > 0) fig.fill_rect(static_cast<int>(X(s.x[i])) - 2, static_cast<int>(Y(s.y[i])) - 2, 5, 5, s.colour);
         }
     }
-    // legend (the first plot's series names)
+    // legend: every series name once, in the order the plots first show it
     int lx = 14;
     const int ly = ph + 24 + 4;
-    if (!plots.empty())
-        for (const Series& s : plots.front().second) {
+    std::vector<std::string> shown;
+    for (const auto& plot : plots)
+        for (const Series& s : plot.second) {
+            if (std::find(shown.begin(), shown.end(), s.name) != shown.end()) continue;
+            shown.push_back(s.name);
             fig.fill_rect(lx, ly, 18, 7, s.colour);
             lx += 24;
             lx += fig.text(lx, ly, s.name, rgb8(0)) + 14;

@@ -33,7 +33,7 @@ struct Series {
 };
 
 /// A log–log plot panel per entry of `plots` (title, curves) side by side, with axes, decade
-/// ticks and one legend.
+/// ticks and one legend (every series name once).
 Canvas convergence_plot(const std::vector<std::pair<std::string, std::vector<Series>>>& plots);
 
 /// A distinct colour per sampler index.

@@ -70,31 +70,78 @@ void Progress::draw(bool force) {
     std::fflush(stderr);
 }
 
+namespace {
+/// Calls row(y) for every row on `threads` threads (rows handed out by an atomic counter).
+template <class Row> void parallel_rows(int height, int threads, const Row& row) {
+    std::atomic<int> next_row{0};
+    auto work = [&]() {
+        for (int y; (y = next_row.fetch_add(1)) < height;) row(y);
+    };
+    std::vector<std::thread> pool;
+    for (int i = 1; i < threads; ++i) pool.emplace_back(work);
+    work();
+    for (std::thread& t : pool) t.join();
+}
+}  // namespace
+
 double render(const Scene& scene, Kind kind, int width, int height, const std::vector<int>& marks, int threads,
               std::uint32_t salt, Progress& progress, std::vector<Image>& out) {
     const int nm = static_cast<int>(marks.size());
     out.assign(marks.size(), Image(width, height));
-    double seconds = 0.0;
-    with_factory(kind, [&](const auto& factory) {
-        std::atomic<int> next_row{0};
+    double seconds = -1.0;
+    auto run = [&](const auto& factory) {
         const auto t0 = Clock::now();
-        auto work = [&]() {
+        parallel_rows(height, threads, [&](int y) {
             std::vector<float> vals(marks.size());
-            for (int y; (y = next_row.fetch_add(1)) < height;) {
-                for (int x = 0; x < width; ++x) {
-                    shade_pixel(scene, factory, x, y, width, height, marks.data(), nm, salt, vals.data());
-                    for (int k = 0; k < nm; ++k) out[k].at(x, y) = vals[k];
-                }
-                progress.add(static_cast<double>(width) * marks.back());
+            for (int x = 0; x < width; ++x) {
+                shade_pixel(scene, factory, x, y, width, height, marks.data(), nm, salt, vals.data());
+                for (int k = 0; k < nm; ++k) out[k].at(x, y) = vals[k];
             }
-        };
-        std::vector<std::thread> pool;
-        for (int i = 1; i < threads; ++i) pool.emplace_back(work);
-        work();
-        for (std::thread& t : pool) t.join();
+            progress.add(static_cast<double>(width) * marks.back());
+        });
         seconds = std::chrono::duration<double>(Clock::now() - t0).count();
-    });
+    };
+    if (scene.type == SceneType::sphere_light) with_sphere_factory(kind, run);
+    else with_factory(kind, run);
     return seconds;
+}
+
+Image render_sphere_reference(const Scene& scene, int width, int height, int spp, int threads, std::uint32_t salt,
+                              Progress& progress, double& exact_fraction) {
+    Image img(width, height);
+    std::atomic<long> exact{0};
+    const SphereCosineFactory factory{tabulation_view()};
+    parallel_rows(height, threads, [&](int y) {
+        long row_exact = 0;
+        for (int x = 0; x < width; ++x) {
+            vec3 o, d, p, n;
+            bool ground = false;
+            camera_ray(scene, x, y, width, height, o, d);
+            if (!hit_surface(scene, o, d, p, n, ground)) continue;  // 0 (sky or emitter)
+            if (ground && sphere_reference_is_exact(scene, glm::dvec3(p))) {
+                img.at(x, y) = static_cast<float>(sphere_radiance_exact(scene, glm::dvec3(p)));
+                ++row_exact;
+                continue;
+            }
+            shade_pixel(scene, factory, x, y, width, height, &spp, 1, salt, &img.at(x, y));
+        }
+        exact += row_exact;
+        progress.add(static_cast<double>(width) * spp);
+    });
+    exact_fraction = static_cast<double>(exact.load()) / (static_cast<double>(width) * height);
+    return img;
+}
+
+Canvas display(const Scene& scene, const Image& img, float exposure) {
+    Canvas c = tonemap(img, exposure, scene.tint);
+    if (scene.type != SceneType::sphere_light) return c;
+    for (int y = 0; y < img.height; ++y)
+        for (int x = 0; x < img.width; ++x) {
+            vec3 o, d;
+            camera_ray(scene, x, y, img.width, img.height, o, d);
+            if (hits_emitter_first(scene, o, d)) c.at(x, y) = rgb8(255);
+        }
+    return c;
 }
 
 Image render_plane_exact(const Scene& scene, int width, int height) {
@@ -102,8 +149,9 @@ Image render_plane_exact(const Scene& scene, int width, int height) {
     for (int y = 0; y < height; ++y)
         for (int x = 0; x < width; ++x) {
             vec3 o, d, p, n;
+            bool ground;
             camera_ray(scene, x, y, width, height, o, d);
-            img.at(x, y) = hit_surface(scene, o, d, p, n)
+            img.at(x, y) = hit_surface(scene, o, d, p, n, ground)
                                ? static_cast<float>(plane_radiance_exact(scene, glm::dvec3(p)))
                                : 0.0f;
         }

@@ -36,11 +36,20 @@ private:
 
 /// Renders `scene` with sampler `kind`: one image per entry of `marks` (increasing sample
 /// counts; the image after marks[k] samples per pixel), with the points seeded by `salt`.
-/// Returns the wall time in seconds.
+/// Returns the wall time in seconds (negative if `kind` has no sampler for the scene's light).
 double render(const Scene& scene, Kind kind, int width, int height, const std::vector<int>& marks, int threads,
               std::uint32_t salt, Progress& progress, std::vector<Image>& out);
 
 /// Scene 1's exact image (closed form, double precision).
 Image render_plane_exact(const Scene& scene, int width, int height);
+
+/// Scene 4's reference: the closed form (sphere_radiance_exact) at the ground points where no
+/// occluder can block the light (their share of all pixels in `exact_fraction`), elsewhere `spp`
+/// samples of the cosine-weighted sampler with the points of `salt`.
+Image render_sphere_reference(const Scene& scene, int width, int height, int spp, int threads, std::uint32_t salt,
+                              Progress& progress, double& exact_fraction);
+
+/// The picture of a render: tonemap() with the scene's tint, scene 4's emitter drawn white.
+Canvas display(const Scene& scene, const Image& img, float exposure);
 
 }  // namespace demo

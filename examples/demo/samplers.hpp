@@ -5,9 +5,9 @@
 /// @file samplers.hpp
 /// The samplers compared, each wrapped in a *factory* that builds the per-shading-point sampler
 /// (the set-up a renderer does once per shading point) from the shading point, the receiver's
-/// normal (zero in the medium, where there is no surface) and the light, and a uniform
-/// `LightSample` result (apse::PointSample): direction, solid-angle pdf (0 = no sample: skip it),
-/// point on the disk and distance to it.
+/// normal (zero in the medium, where there is no surface) and the light — a disk or a sphere —
+/// and a uniform `LightSample` result (apse::PointSample): direction, solid-angle pdf (0 = no
+/// sample: skip it), point on the light and distance to it.
 
 #include <array>
 #include <vector>
@@ -15,6 +15,9 @@
 #include <apse/apse.hpp>
 #include <apse/baselines/area.hpp>
 #include <apse/baselines/gamito.hpp>
+
+// pbrt-v4's uniform cone sampling of sphere lights, the reference apse's benchmarks use too.
+#include "../../bench/support/cone_sampler.hpp"
 
 namespace demo {
 
@@ -27,11 +30,20 @@ struct Disk {
     float radius, Le;
 };
 
+/// A sphere light: centre, radius, emitted radiance (uniform).
+struct SphereEmitter {
+    vec3 center;
+    float radius, Le;
+};
+
 /// One light sample from a shading point: direction, pdf (solid angle; 0 = no sample), point on
 /// the disk, distance to it.
 using LightSample = apse::PointSample<float>;
 
-enum class Kind { area, gamito, radial, ld_radial, parallel, tabulated, cosine };
+/// The samplers. `cone` (pbrt-v4's uniform cone sampling) exists for sphere lights only and plays
+/// the role of `area` there (the reference the others are measured against); Gamito and area
+/// sampling exist for disks only.
+enum class Kind { area, gamito, radial, ld_radial, parallel, tabulated, cosine, cone };
 
 inline const char* kind_name(Kind k) {
     switch (k) {
@@ -42,13 +54,19 @@ inline const char* kind_name(Kind k) {
     case Kind::parallel: return "parallel";
     case Kind::tabulated: return "tabulated";
     case Kind::cosine: return "cosine-weighted";
+    case Kind::cone: return "cone";
     }
     return "?";
 }
 
-/// The samplers of the comparison, in display order.
-inline std::vector<Kind> all_kinds() {
+/// The samplers of the disk-light comparisons, in display order.
+inline std::vector<Kind> disk_kinds() {
     return {Kind::area, Kind::gamito, Kind::radial, Kind::ld_radial, Kind::parallel, Kind::tabulated, Kind::cosine};
+}
+
+/// The samplers of the sphere-light comparison, in display order (the first is the reference).
+inline std::vector<Kind> sphere_kinds() {
+    return {Kind::cone, Kind::ld_radial, Kind::parallel, Kind::tabulated, Kind::cosine};
 }
 
 /// Wraps a sampler with `sample(u) -> DirectionSample<float>` into LightSample (the point where
@@ -98,17 +116,63 @@ struct CosineFactory {
 /// The shared table (apse::default_table(): built once, thread-safely; read-only while rendering).
 inline apse::TabulationView tabulation_view() { return apse::default_table().view(); }
 
-/// Calls f(factory) with the factory of kind k (one template instantiation per kind).
-template <class F> void with_factory(Kind k, F&& f) {
-    switch (k) {
-    case Kind::area: f(AreaFactory{}); break;
-    case Kind::gamito: f(GamitoFactory{}); break;
-    case Kind::radial: f(MapFactory<apse::RadialMap<float>>{}); break;
-    case Kind::ld_radial: f(MapFactory<apse::LdRadialMap<float>>{}); break;
-    case Kind::parallel: f(MapFactory<apse::ParallelMap<float>>{}); break;
-    case Kind::tabulated: f(TabulatedFactory{tabulation_view()}); break;
-    case Kind::cosine: f(CosineFactory{tabulation_view()}); break;
+/// Sphere-light factories: `(o, receiver normal, sphere) -> sampler with sample(u) -> LightSample`
+/// (apse::SphereLight gives the point on the sphere and the shadow-ray distance itself).
+struct ConeFactory {  // pbrt-v4: uniform in the cone of directions the sphere subtends
+    auto operator()(const vec3& o, const vec3&, const SphereEmitter& L) const {
+        return apse_bench::ConeSampler<float, true>(o, L.center, L.radius);
     }
+};
+template <class Map> struct SphereMapFactory {
+    auto operator()(const vec3& o, const vec3&, const SphereEmitter& L) const {
+        return apse::SphereLight<Map>(o, L.center, L.radius);
+    }
+};
+struct SphereTabulatedFactory {
+    apse::TabulationView view;
+    auto operator()(const vec3& o, const vec3&, const SphereEmitter& L) const {
+        return apse::SphereLight<apse::TabulatedLdRadialMap<float>>(o, L.center, L.radius, view);
+    }
+};
+/// Exactly ∝ the receiver's clamped cosine over the cap, also where the horizon cuts it.
+struct SphereCosineFactory {
+    apse::TabulationView view;
+    auto operator()(const vec3& o, const vec3& n, const SphereEmitter& L) const {
+        return apse::SphereLight<apse::CosineWeighted<apse::TabulatedLdRadialMap<float>>>(o, L.center, L.radius,
+                                                                                          view, n);
+    }
+};
+
+/// Calls f(factory) with the disk-light factory of kind k (one template instantiation per
+/// kind); false (f not called) for a kind without one (cone).
+template <class F> bool with_factory(Kind k, F&& f) {
+    switch (k) {
+    case Kind::area: f(AreaFactory{}); return true;
+    case Kind::gamito: f(GamitoFactory{}); return true;
+    case Kind::radial: f(MapFactory<apse::RadialMap<float>>{}); return true;
+    case Kind::ld_radial: f(MapFactory<apse::LdRadialMap<float>>{}); return true;
+    case Kind::parallel: f(MapFactory<apse::ParallelMap<float>>{}); return true;
+    case Kind::tabulated: f(TabulatedFactory{tabulation_view()}); return true;
+    case Kind::cosine: f(CosineFactory{tabulation_view()}); return true;
+    case Kind::cone: return false;
+    }
+    return false;
+}
+
+/// Calls f(factory) with the sphere-light factory of kind k; false (f not called) for a kind
+/// without one (area, Gamito).
+template <class F> bool with_sphere_factory(Kind k, F&& f) {
+    switch (k) {
+    case Kind::cone: f(ConeFactory{}); return true;
+    case Kind::radial: f(SphereMapFactory<apse::RadialMap<float>>{}); return true;
+    case Kind::ld_radial: f(SphereMapFactory<apse::LdRadialMap<float>>{}); return true;
+    case Kind::parallel: f(SphereMapFactory<apse::ParallelMap<float>>{}); return true;
+    case Kind::tabulated: f(SphereTabulatedFactory{tabulation_view()}); return true;
+    case Kind::cosine: f(SphereCosineFactory{tabulation_view()}); return true;
+    case Kind::area:
+    case Kind::gamito: return false;
+    }
+    return false;
 }
 
 }  // namespace demo

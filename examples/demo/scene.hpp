@@ -1,4 +1,4 @@
-// apse demo — the three scenes and their per-pixel estimators (a tiny ray tracer).
+// apse demo — the four scenes and their per-pixel estimators (a tiny ray tracer).
 // SPDX-License-Identifier: MIT
 #pragma once
 
@@ -8,13 +8,18 @@
 ///  2. `medium` — the talk's disk light inside a homogeneous medium (single scattering along
 ///     camera rays, equiangular distance sampling: the same for every sampler);
 ///  3. `spheres` — the authors' scene: three diffuse spheres of radius 2 on a plane, a
-///     two-sided disk light of radius 3 at (1, 3, 4).
+///     two-sided disk light of radius 3 at (1, 3, 4);
+///  4. `sphere` — a sphere light sunk a little into a diffuse ground plane, so that every ground
+///     point sees it cut by its horizon, and a diffuse ball beside it casting a shadow. The
+///     emitter blocks camera rays (pictures draw it white; its pixels are 0 in the images).
 /// One camera ray per pixel through its centre, so the pixel value is a well-defined integral
-/// over the light only (scene 1 has it in closed form: plane_radiance_exact).
+/// over the light only (scene 1 has it in closed form: plane_radiance_exact; scene 4 where
+/// nothing occludes the light: sphere_radiance_exact).
 
 #include <cmath>
 #include <cstdint>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include "points.hpp"
@@ -27,16 +32,18 @@ struct Sphere {
     float radius;
 };
 
-enum class SceneType { plane, medium, spheres };
+enum class SceneType { plane, medium, spheres, sphere_light };
 
 struct Scene {
     std::string name, title;
     SceneType type;
-    Disk light;
+    std::vector<Kind> kinds;             // the samplers compared, the first is the reference
+    Disk light{};                        // scenes 1–3
+    SphereEmitter lamp{};                // scene 4
     vec3 eye, look_at;
     float fov_deg;
     float albedo = 0.8f;
-    std::vector<Sphere> spheres;         // scene 3
+    std::vector<Sphere> spheres;         // scenes 3 and 4 (diffuse, occluders)
     float sigma_s = 0, sigma_t = 0;      // scene 2: homogeneous medium inside a box
     vec3 box_min{0.0f}, box_max{0.0f};
     vec3 tint{1.0f};                     // light colour for display only
@@ -44,7 +51,8 @@ struct Scene {
 };
 
 inline std::vector<Scene> make_scenes() {
-    std::vector<Scene> s(3);
+    std::vector<Scene> s(4);
+    for (int i = 0; i < 3; ++i) s[i].kinds = disk_kinds();
     s[0].name = "plane";
     s[0].title = "Disk light perpendicular to a ground plane";
     s[0].type = SceneType::plane;
@@ -79,6 +87,18 @@ inline std::vector<Scene> make_scenes() {
     s[2].fov_deg = 50.0f;
     s[2].tint = vec3(1.0f, 0.95f, 0.85f);
     s[2].inset = vec2(0.45f, 0.8f);
+
+    s[3].name = "sphere";
+    s[3].title = "Sphere light cut by the horizon";
+    s[3].type = SceneType::sphere_light;
+    s[3].kinds = sphere_kinds();
+    s[3].lamp = {vec3(0.0f, 0.7f, 0.0f), 1.0f, 2.0f};  // 0.3 below the ground
+    s[3].spheres = {{vec3(1.7f, 0.4f, 0.9f), 0.4f}};
+    s[3].eye = vec3(-1.2f, 3.4f, 6.0f);
+    s[3].look_at = vec3(0.8f, 0.0f, 0.4f);
+    s[3].fov_deg = 50.0f;
+    s[3].tint = vec3(1.0f, 0.85f, 0.7f);
+    s[3].inset = vec2(0.7f, 0.45f);
     return s;
 }
 
@@ -108,28 +128,50 @@ inline float hit_sphere(const Sphere& sp, const vec3& o, const vec3& d) {
     return t1 > 1e-4f ? t1 : -1.0f;
 }
 
-/// Nearest surface hit (ground y = 0 and the spheres): distance, point and normal.
-inline bool hit_surface(const Scene& s, const vec3& o, const vec3& d, vec3& p, vec3& n) {
+/// Distance to the nearest surface (ground y = 0 and the spheres; 1e30 if none) with its normal
+/// and whether it is the ground.
+inline float nearest_surface(const Scene& s, const vec3& o, const vec3& d, vec3& n, bool& ground) {
     float best = 1e30f;
+    ground = false;
     if (d.y < 0.0f && o.y > 0.0f) {
         best = -o.y / d.y;
         n = vec3(0.0f, 1.0f, 0.0f);
+        ground = true;
     }
     for (const Sphere& sp : s.spheres) {
         const float t = hit_sphere(sp, o, d);
         if (t > 0.0f && t < best) {
             best = t;
             n = glm::normalize(o + t * d - sp.center);
+            ground = false;
         }
     }
-    if (best >= 1e30f) return false;
+    return best;
+}
+
+/// True if the camera ray meets scene 4's emitter before any surface.
+inline bool hits_emitter_first(const Scene& s, const vec3& o, const vec3& d) {
+    if (s.type != SceneType::sphere_light) return false;
+    vec3 n;
+    bool ground;
+    const float t = hit_sphere({s.lamp.center, s.lamp.radius}, o, d);
+    return t > 0.0f && t < nearest_surface(s, o, d, n, ground);
+}
+
+/// Nearest surface hit: point, normal and whether it is the ground; false if the ray meets
+/// nothing (or scene 4's emitter first).
+inline bool hit_surface(const Scene& s, const vec3& o, const vec3& d, vec3& p, vec3& n, bool& ground) {
+    const float best = nearest_surface(s, o, d, n, ground);
+    if (best >= 1e30f || hits_emitter_first(s, o, d)) return false;
     p = o + best * d;
     return true;
 }
 
-/// True if nothing blocks the segment from p along d up to distance dist (spheres only: the
-/// light is above the ground).
+/// True if nothing blocks the segment from p (at or above the ground) along d up to distance
+/// dist: the spheres, and the ground for a segment ending below it (the part of scene 4's
+/// emitter under the ground; every other light is above it).
 inline bool unoccluded(const Scene& s, const vec3& p, const vec3& d, float dist) {
+    if (p.y + dist * d.y < 0.0f) return false;
     for (const Sphere& sp : s.spheres) {
         const float t = hit_sphere(sp, p, d);
         if (t > 0.0f && t < dist) return false;
@@ -193,6 +235,90 @@ inline double plane_reference_selfcheck(const Scene& s) {
     return worst;
 }
 
+/// Irradiance at p on a surface of unit normal n from a sphere (centre c, radius r) of unit
+/// radiance, E = ∫_cap max(0, n·ω) dω (solid angle), the cap cut by the horizon where it crosses
+/// it; 0 for p inside or on the sphere. With d = |c − p|, sin σ = r/d (the cap's half-angle σ)
+/// and cos θ = n·(c − p)/d: π sin²σ cos θ while the whole cap is above the horizon (cos θ ≥
+/// sin σ), 0 below it (cos θ ≤ −sin σ), and between them the classical form factor of a
+/// differential area to a sphere cut by its plane (as in Lagarde & de Rousiers 2014, "Moving
+/// Frostbite to PBR", §4.7): with x = cot σ, y = −x cot θ,
+///   E = (cos θ acos y − x sin θ √(1 − y²)) sin²σ + atan(sin θ √(1 − y²) / x).
+/// Checked against quadrature by sphere_reference_selfcheck().
+inline double sphere_irradiance(const glm::dvec3& p, const glm::dvec3& n, const glm::dvec3& c, double r) {
+    const double pi = 3.14159265358979323846;
+    const glm::dvec3 v = c - p;
+    const double d = std::sqrt(glm::dot(v, v));
+    if (!(d > r)) return 0.0;
+    const double sin2s = (r / d) * (r / d), cos_t = glm::dot(n, v) / d;
+    if (cos_t * cos_t >= sin2s) return cos_t > 0.0 ? pi * sin2s * cos_t : 0.0;
+    const double sin_t = std::sqrt(std::max(1.0 - cos_t * cos_t, 0.0));
+    const double x = std::sqrt((d - r) * (d + r)) / r;
+    const double y = std::clamp(-x * cos_t / sin_t, -1.0, 1.0);
+    const double sy = sin_t * std::sqrt(std::max(1.0 - y * y, 0.0));
+    return std::max((cos_t * std::acos(y) - x * sy) * sin2s + std::atan2(sy, x), 0.0);
+}
+
+/// True if scene 4's closed form is its pixel value at the ground point p: no occluder's cone of
+/// directions from p overlaps the light's (then nothing but the horizon cuts the light's cap).
+inline bool sphere_reference_is_exact(const Scene& s, const glm::dvec3& p) {
+    const glm::dvec3 vl = glm::dvec3(s.lamp.center) - p;
+    const double dl = std::sqrt(glm::dot(vl, vl));
+    if (!(dl > s.lamp.radius)) return true;  // no light either way
+    const double al = std::asin(s.lamp.radius / dl);
+    for (const Sphere& sp : s.spheres) {
+        const glm::dvec3 vo = glm::dvec3(sp.center) - p;
+        const double d_occ = std::sqrt(glm::dot(vo, vo));
+        const double ao = std::asin(std::min(sp.radius / d_occ, 1.0));
+        const double between = std::acos(std::clamp(glm::dot(vl, vo) / (dl * d_occ), -1.0, 1.0));
+        if (between <= al + ao + 1e-6) return false;
+    }
+    return true;
+}
+
+/// Scene 4's exact pixel value at the ground point p where nothing occludes the light:
+/// (albedo/π) Le E(p).
+inline double sphere_radiance_exact(const Scene& s, const glm::dvec3& p) {
+    return s.albedo / 3.14159265358979323846 * s.lamp.Le *
+           sphere_irradiance(p, glm::dvec3(0, 1, 0), glm::dvec3(s.lamp.center), s.lamp.radius);
+}
+
+/// Max relative error of sphere_irradiance against a 600 × 600 midpoint quadrature over the
+/// cap (in cos θ' and φ about its axis: dω = d cos θ' dφ) for receivers with the cap above,
+/// cut by and mostly below their horizon (expected ~1e-5: the quadrature's error at the kink).
+inline double sphere_reference_selfcheck(const Scene& s) {
+    const double pi = 3.14159265358979323846, r = s.lamp.radius;
+    const glm::dvec3 c(s.lamp.center);
+    struct Receiver {
+        glm::dvec3 p, n;
+    };
+    const Receiver rs[] = {{{1.5, 0, 0.4}, {0, 1, 0}},   {{-3.0, 0, 2.0}, {0, 1, 0}},
+                           {{0.2, 0, 5.0}, {0, 1, 0}},   {{0.0, 3.0, 0.0}, {0, -1, 0}},
+                           {{2.0, 0.5, 1.0}, glm::normalize(glm::dvec3(-1, 0.2, 0.3))},
+                           {{2.0, 0.5, 1.0}, glm::normalize(glm::dvec3(0.2, 1, 0.2))}};
+    double worst = 0.0;
+    const int N = 600;
+    for (const Receiver& q : rs) {
+        const glm::dvec3 v = c - q.p;
+        const double d = std::sqrt(glm::dot(v, v));
+        const glm::dvec3 a = v / d;
+        const glm::dvec3 e1 = glm::normalize(glm::cross(a, std::fabs(a.x) < 0.9 ? glm::dvec3(1, 0, 0) : glm::dvec3(0, 1, 0)));
+        const glm::dvec3 e2 = glm::cross(a, e1);
+        const double cos_s = std::sqrt((d - r) * (d + r)) / d;
+        double sum = 0.0;
+        for (int i = 0; i < N; ++i)
+            for (int j = 0; j < N; ++j) {
+                const double u = cos_s + (1.0 - cos_s) * (i + 0.5) / N, ph = 2.0 * pi * (j + 0.5) / N;
+                const double sn = std::sqrt(std::max(1.0 - u * u, 0.0));
+                const glm::dvec3 w = u * a + sn * std::cos(ph) * e1 + sn * std::sin(ph) * e2;
+                sum += std::max(glm::dot(q.n, w), 0.0);
+            }
+        const double quad = sum * (1.0 - cos_s) * 2.0 * pi / (double(N) * N);
+        const double exact = sphere_irradiance(q.p, q.n, c, r);
+        worst = std::max(worst, std::fabs(quad - exact) / exact);
+    }
+    return worst;
+}
+
 /// Ray–box slab test: the [t0, t1] of the ray inside the box (false if it misses).
 inline bool box_interval(const vec3& lo, const vec3& hi, const vec3& o, const vec3& d, float& t0, float& t1) {
     t0 = 0.0f;
@@ -207,55 +333,67 @@ inline bool box_interval(const vec3& lo, const vec3& hi, const vec3& o, const ve
     return t1 > t0;
 }
 
-/// Renders the samples of one pixel with the factory's sampler, writing the running mean after
-/// marks[k] samples to out[k] (marks increasing; the last is the number of samples). `salt`
-/// changes the points (the references use other points than the renders they judge).
+/// True if a shading point at p can receive light from `light`: outside a sphere light (a
+/// point inside or on it sees no cap); every point for a disk.
+inline bool outside_light(const Disk&, const vec3&) { return true; }
+inline bool outside_light(const SphereEmitter& L, const vec3& p) { return glm::length(p - L.center) > L.radius; }
+
+/// Single scattering along the camera ray (o, d) in scene 2's medium: the running means of
+/// shade_pixel.
 template <class Factory>
-void shade_pixel(const Scene& s, const Factory& make, int x, int y, int w, int h, const int* marks, int nmarks,
-                 std::uint32_t salt, float* out) {
-    vec3 o, d;
-    camera_ray(s, x, y, w, h, o, d);
-    const PixelPoints pts((static_cast<std::uint32_t>(y * w + x) * 2654435761u + 12345u) ^ hash32(salt));
+void shade_medium(const Scene& s, const Factory& make, const vec3& o, const vec3& d, const PixelPoints& pts,
+                  const int* marks, int nmarks, float* out) {
     const float inv_pi = 0.31830988618f;
     double sum = 0.0;
     int mark = 0;
     const int n = marks[nmarks - 1];
-
-    if (s.type == SceneType::medium) {
-        float t0, t1;
-        const bool inside = box_interval(s.box_min, s.box_max, o, d, t0, t1);
-        // equiangular sampling of the distance about the light's centre
-        const float tc = glm::dot(s.light.center - o, d);
-        const float D = std::max(glm::length(o + tc * d - s.light.center), 1e-4f);
-        const float a0 = std::atan((t0 - tc) / D), a1 = std::atan((t1 - tc) / D);
-        const float phase = 0.25f * inv_pi;
-        for (int i = 0; i < n; ++i) {
-            if (inside) {
-                float u1, u2;
-                pts.light(static_cast<std::uint32_t>(i), u1, u2);
-                const float ang = a0 + pts.extra(static_cast<std::uint32_t>(i)) * (a1 - a0);
-                const float off = D * std::tan(ang);
-                const float t = tc + off;
-                const float pdf_t = D / ((a1 - a0) * (D * D + off * off));
-                const vec3 p = o + t * d;
-                const LightSample ls = make(p, vec3(0.0f), s.light).sample(vec2(u1, u2));  // no surface
-                if (ls.pdf > 0.0f) {
-                    const float tr = std::exp(-s.sigma_t * (t - t0)) * std::exp(-s.sigma_t * ls.distance);
-                    sum += static_cast<double>(s.sigma_s * tr * phase * s.light.Le / (pdf_t * ls.pdf));
-                }
-            }
-            if (i + 1 == marks[mark]) out[mark++] = static_cast<float>(sum / (i + 1));
-        }
-        return;
-    }
-
-    vec3 p = o + d, nrm(0.0f, 1.0f, 0.0f);  // (unused when the ray hits nothing)
-    const bool hit = hit_surface(s, o, d, p, nrm);
-    const vec3 po = s.type == SceneType::plane ? p : p + 1e-3f * nrm;  // plane: exact reference at p
-    const auto sampler = make(po, nrm, s.light);  // per shading point set-up, once
-    const float f = s.albedo * inv_pi * s.light.Le;
+    float t0, t1;
+    const bool inside = box_interval(s.box_min, s.box_max, o, d, t0, t1);
+    // equiangular sampling of the distance about the light's centre
+    const float tc = glm::dot(s.light.center - o, d);
+    const float D = std::max(glm::length(o + tc * d - s.light.center), 1e-4f);
+    const float a0 = std::atan((t0 - tc) / D), a1 = std::atan((t1 - tc) / D);
+    const float phase = 0.25f * inv_pi;
     for (int i = 0; i < n; ++i) {
-        if (hit) {
+        if (inside) {
+            float u1, u2;
+            pts.light(static_cast<std::uint32_t>(i), u1, u2);
+            const float ang = a0 + pts.extra(static_cast<std::uint32_t>(i)) * (a1 - a0);
+            const float off = D * std::tan(ang);
+            const float t = tc + off;
+            const float pdf_t = D / ((a1 - a0) * (D * D + off * off));
+            const vec3 p = o + t * d;
+            const LightSample ls = make(p, vec3(0.0f), s.light).sample(vec2(u1, u2));  // no surface
+            if (ls.pdf > 0.0f) {
+                const float tr = std::exp(-s.sigma_t * (t - t0)) * std::exp(-s.sigma_t * ls.distance);
+                sum += static_cast<double>(s.sigma_s * tr * phase * s.light.Le / (pdf_t * ls.pdf));
+            }
+        }
+        if (i + 1 == marks[mark]) out[mark++] = static_cast<float>(sum / (i + 1));
+    }
+}
+
+/// Direct lighting from `light` (a Disk or a SphereEmitter) of the diffuse surface the camera
+/// ray (o, d) meets, with shadow rays (but on scene 1's bare plane): the running means of
+/// shade_pixel. Scene 1's points and scene 4's ground points are shaded exactly at the hit
+/// point (where the closed forms are evaluated), the others 1e-3 off the surface.
+template <class Factory, class Light>
+void shade_surface(const Scene& s, const Factory& make, const Light& light, const vec3& o, const vec3& d,
+                   const PixelPoints& pts, const int* marks, int nmarks, float* out) {
+    const float inv_pi = 0.31830988618f;
+    double sum = 0.0;
+    int mark = 0;
+    const int n = marks[nmarks - 1];
+    vec3 p = o + d, nrm(0.0f, 1.0f, 0.0f);  // (unused when the ray hits nothing)
+    bool ground = false;
+    const bool hit = hit_surface(s, o, d, p, nrm, ground);
+    const bool exact_at_p = s.type == SceneType::plane || (s.type == SceneType::sphere_light && ground);
+    const vec3 po = exact_at_p ? p : p + 1e-3f * nrm;
+    const bool lit = hit && outside_light(light, po);
+    const auto sampler = make(po, nrm, light);  // per shading point set-up, once
+    const float f = s.albedo * inv_pi * light.Le;
+    for (int i = 0; i < n; ++i) {
+        if (lit) {
             float u1, u2;
             pts.light(static_cast<std::uint32_t>(i), u1, u2);
             const LightSample ls = sampler.sample(vec2(u1, u2));
@@ -266,6 +404,24 @@ void shade_pixel(const Scene& s, const Factory& make, int x, int y, int w, int h
         }
         if (i + 1 == marks[mark]) out[mark++] = static_cast<float>(sum / (i + 1));
     }
+}
+
+/// Renders the samples of one pixel with the factory's sampler (a disk-light factory, or a
+/// sphere-light one for scene 4), writing the running mean after marks[k] samples to out[k]
+/// (marks increasing; the last is the number of samples). `salt` changes the points (the
+/// references use other points than the renders they judge).
+template <class Factory>
+void shade_pixel(const Scene& s, const Factory& make, int x, int y, int w, int h, const int* marks, int nmarks,
+                 std::uint32_t salt, float* out) {
+    vec3 o, d;
+    camera_ray(s, x, y, w, h, o, d);
+    const PixelPoints pts((static_cast<std::uint32_t>(y * w + x) * 2654435761u + 12345u) ^ hash32(salt));
+    if constexpr (std::is_invocable_v<const Factory&, const vec3&, const vec3&, const SphereEmitter&>)
+        shade_surface(s, make, s.lamp, o, d, pts, marks, nmarks, out);
+    else if (s.type == SceneType::medium)
+        shade_medium(s, make, o, d, pts, marks, nmarks, out);
+    else
+        shade_surface(s, make, s.light, o, d, pts, marks, nmarks, out);
 }
 
 }  // namespace demo
