@@ -22,6 +22,7 @@
 #include "maps/parallel.hpp"
 #include "maps/tabulated.hpp"
 #include "projected_solid_angle.hpp"
+#include "projected_cap.hpp"
 #include "cosine_weighted.hpp"
 #include "disk_light.hpp"
 #include "sphere_light.hpp"

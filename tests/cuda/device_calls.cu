@@ -215,6 +215,11 @@ __global__ void cosine_kernel(const T* in, T* out, float* table_rows, int n) {
     const auto p = psa.sample(u);
     s += p.pdf + psa.pdf(p.direction) + psa.invert(p.direction).y + T(psa.empty() ? 1 : 0) + psa.ellipse().tan_beta +
          apse::ProjectedSolidAngleSampler<T>().pdf(p.direction);
+    // the projected-cap sampler on its own (a cap cut by the horizon) and its empty state
+    const apse::ProjectedCapSampler<T> pcs(apse::project_sphere(V(0), V(a, T(0), T(3)), T(1)), V(T(1), T(0.1), T(0.2)));
+    const auto pc = pcs.sample(u);
+    s += pc.pdf + pcs.pdf(pc.direction) + pcs.invert(pc.direction).x + pcs.projected_solid_angle() + T(pcs.cut() ? 1 : 0) +
+         apse::ProjectedCapSampler<T>().pdf(pc.direction);
     out[i] = s;
 }
 
