@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Builds and runs apse's demo (the README's first Quick-start command). Installs missing Debian
-# packages first; renders the paper's comparison (3 scenes × 7 samplers, ~1 minute on 2 cores)
-# and prints where the pictures and the table were written.
+# packages first; renders the paper's comparison (3 disk-light scenes × 7 samplers, and a sphere
+# light × 5 samplers; ~1 minute on 2 cores) and prints where the pictures and the table were written.
 #   bash tools/demo.sh [OUTPUT_DIR] [extra apse_demo options, e.g. --threads 4]
 set -euo pipefail
 cd "$(dirname "$0")/.."

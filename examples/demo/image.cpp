@@ -23,17 +23,26 @@
 
 namespace demo {
 
-double rel_mse(const Image& img, const Image& ref) {
-    double mean = 0.0;
-    for (float v : ref.px) mean += v;
-    mean /= static_cast<double>(ref.px.size());
+double rel_mse(const Image& img, const Image& ref) { return rel_mse(img, ref, Image()); }
+
+double rel_mse(const Image& img, const Image& ref, const Image& mask) {
+    auto in = [&](std::size_t i) { return mask.px.empty() || mask.px[i] > 0.0f; };
+    double mean = 0.0, count = 0.0;
+    for (std::size_t i = 0; i < ref.px.size(); ++i)
+        if (in(i)) {
+            mean += ref.px[i];
+            count += 1.0;
+        }
+    if (!(count > 0.0)) return 0.0;
+    mean /= count;
     const double eps = 1e-2 * mean * mean;
     double s = 0.0;
     for (std::size_t i = 0; i < ref.px.size(); ++i) {
+        if (!in(i)) continue;
         const double d = static_cast<double>(img.px[i]) - ref.px[i];
         s += d * d / (static_cast<double>(ref.px[i]) * ref.px[i] + eps);
     }
-    return s / static_cast<double>(ref.px.size());
+    return s / count;
 }
 
 float auto_exposure(const Image& ref) {

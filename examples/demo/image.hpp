@@ -27,6 +27,10 @@ struct Image {
 /// eps = 1e-2 × (mean of ref)² (keeps dark pixels from dominating).
 double rel_mse(const Image& img, const Image& ref);
 
+/// rel_mse over the pixels where mask > 0 only (eps from the mean of ref over them; 0 if there
+/// are none); an empty mask (Image()) selects every pixel.
+double rel_mse(const Image& img, const Image& ref, const Image& mask);
+
 /// The exposure that maps the reference's 99th percentile of lit pixels to display value ~0.8.
 float auto_exposure(const Image& ref);
 

@@ -107,12 +107,11 @@ double render(const Scene& scene, Kind kind, int width, int height, const std::v
 }
 
 Image render_sphere_reference(const Scene& scene, int width, int height, int spp, int threads, std::uint32_t salt,
-                              Progress& progress, double& exact_fraction) {
+                              Progress& progress, Image& exact) {
     Image img(width, height);
-    std::atomic<long> exact{0};
-    const SphereCosineFactory factory{tabulation_view()};
+    exact = Image(width, height);
+    const SphereTabulatedFactory factory{tabulation_view()};
     parallel_rows(height, threads, [&](int y) {
-        long row_exact = 0;
         for (int x = 0; x < width; ++x) {
             vec3 o, d, p, n;
             bool ground = false;
@@ -120,15 +119,13 @@ Image render_sphere_reference(const Scene& scene, int width, int height, int spp
             if (!hit_surface(scene, o, d, p, n, ground)) continue;  // 0 (sky or emitter)
             if (ground && sphere_reference_is_exact(scene, glm::dvec3(p))) {
                 img.at(x, y) = static_cast<float>(sphere_radiance_exact(scene, glm::dvec3(p)));
-                ++row_exact;
+                exact.at(x, y) = 1.0f;
                 continue;
             }
             shade_pixel(scene, factory, x, y, width, height, &spp, 1, salt, &img.at(x, y));
         }
-        exact += row_exact;
         progress.add(static_cast<double>(width) * spp);
     });
-    exact_fraction = static_cast<double>(exact.load()) / (static_cast<double>(width) * height);
     return img;
 }
 

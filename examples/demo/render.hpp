@@ -44,10 +44,10 @@ double render(const Scene& scene, Kind kind, int width, int height, const std::v
 Image render_plane_exact(const Scene& scene, int width, int height);
 
 /// Scene 4's reference: the closed form (sphere_radiance_exact) at the ground points where no
-/// occluder can block the light (their share of all pixels in `exact_fraction`), elsewhere `spp`
-/// samples of the cosine-weighted sampler with the points of `salt`.
+/// occluder can block the light (`exact`: 1 there, 0 elsewhere), elsewhere `spp` samples of the
+/// tabulated sampler with the points of `salt`.
 Image render_sphere_reference(const Scene& scene, int width, int height, int spp, int threads, std::uint32_t salt,
-                              Progress& progress, double& exact_fraction);
+                              Progress& progress, Image& exact);
 
 /// The picture of a render: tonemap() with the scene's tint, scene 4's emitter drawn white.
 Canvas display(const Scene& scene, const Image& img, float exposure);

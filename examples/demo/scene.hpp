@@ -35,7 +35,7 @@ struct Sphere {
 enum class SceneType { plane, medium, spheres, sphere_light };
 
 struct Scene {
-    std::string name, title;
+    std::string name, title, label;      // label: the convergence plot's panel
     SceneType type;
     std::vector<Kind> kinds;             // the samplers compared, the first is the reference
     Disk light{};                        // scenes 1–3
@@ -53,7 +53,7 @@ struct Scene {
 inline std::vector<Scene> make_scenes() {
     std::vector<Scene> s(4);
     for (int i = 0; i < 3; ++i) s[i].kinds = disk_kinds();
-    s[0].name = "plane";
+    s[0].name = s[0].label = "plane";
     s[0].title = "Disk light perpendicular to a ground plane";
     s[0].type = SceneType::plane;
     s[0].light = {vec3(0.0f, 1.05f, 0.0f), glm::normalize(vec3(1.0f, 0.0f, 0.35f)), 1.0f, 6.0f};
@@ -63,7 +63,7 @@ inline std::vector<Scene> make_scenes() {
     s[0].tint = vec3(1.0f, 0.9f, 0.75f);
     s[0].inset = vec2(0.5f, 0.6f);
 
-    s[1].name = "medium";
+    s[1].name = s[1].label = "medium";
     s[1].title = "Disk light inside a homogeneous medium";
     s[1].type = SceneType::medium;
     s[1].light = {vec3(0.0f), glm::normalize(vec3(1.0f, 0.25f, 0.5f)), 1.0f, 12.0f};
@@ -77,7 +77,7 @@ inline std::vector<Scene> make_scenes() {
     s[1].tint = vec3(0.8f, 0.9f, 1.0f);
     s[1].inset = vec2(0.55f, 0.5f);
 
-    s[2].name = "spheres";
+    s[2].name = s[2].label = "spheres";
     s[2].title = "Spheres (after the authors' scene)";
     s[2].type = SceneType::spheres;
     s[2].light = {vec3(1.0f, 3.0f, 4.0f), glm::normalize(vec3(0.0f, -1.0f, -1.0f)), 3.0f, 1.5f};
@@ -89,16 +89,17 @@ inline std::vector<Scene> make_scenes() {
     s[2].inset = vec2(0.45f, 0.8f);
 
     s[3].name = "sphere";
+    s[3].label = "sphere light";
     s[3].title = "Sphere light cut by the horizon";
     s[3].type = SceneType::sphere_light;
     s[3].kinds = sphere_kinds();
     s[3].lamp = {vec3(0.0f, 0.7f, 0.0f), 1.0f, 2.0f};  // 0.3 below the ground
-    s[3].spheres = {{vec3(1.7f, 0.4f, 0.9f), 0.4f}};
-    s[3].eye = vec3(-1.2f, 3.4f, 6.0f);
-    s[3].look_at = vec3(0.8f, 0.0f, 0.4f);
+    s[3].spheres = {{vec3(1.5f, 0.35f, 0.7f), 0.35f}};
+    s[3].eye = vec3(-0.6f, 4.2f, 5.0f);
+    s[3].look_at = vec3(0.6f, 0.0f, 0.1f);
     s[3].fov_deg = 50.0f;
     s[3].tint = vec3(1.0f, 0.85f, 0.7f);
-    s[3].inset = vec2(0.7f, 0.45f);
+    s[3].inset = vec2(0.78f, 0.62f);  // the ball's penumbra and unoccluded ground beside it
     return s;
 }
 
@@ -258,8 +259,9 @@ inline double sphere_irradiance(const glm::dvec3& p, const glm::dvec3& n, const 
     return std::max((cos_t * std::acos(y) - x * sy) * sin2s + std::atan2(sy, x), 0.0);
 }
 
-/// True if scene 4's closed form is its pixel value at the ground point p: no occluder's cone of
-/// directions from p overlaps the light's (then nothing but the horizon cuts the light's cap).
+/// True if scene 4's closed form is its pixel value at the ground point p: every occluder is
+/// entirely behind the light seen from p, or its cone of directions from p does not overlap the
+/// light's (then nothing but the horizon cuts the light's cap).
 inline bool sphere_reference_is_exact(const Scene& s, const glm::dvec3& p) {
     const glm::dvec3 vl = glm::dvec3(s.lamp.center) - p;
     const double dl = std::sqrt(glm::dot(vl, vl));
@@ -268,6 +270,7 @@ inline bool sphere_reference_is_exact(const Scene& s, const glm::dvec3& p) {
     for (const Sphere& sp : s.spheres) {
         const glm::dvec3 vo = glm::dvec3(sp.center) - p;
         const double d_occ = std::sqrt(glm::dot(vo, vo));
+        if (d_occ - sp.radius > dl + s.lamp.radius) continue;  // behind the light
         const double ao = std::asin(std::min(sp.radius / d_occ, 1.0));
         const double between = std::acos(std::clamp(glm::dot(vl, vo) / (dl * d_occ), -1.0, 1.0));
         if (between <= al + ao + 1e-6) return false;
