@@ -16,6 +16,7 @@
 /// over the light only (scene 1 has it in closed form: plane_radiance_exact; scene 4 where
 /// nothing occludes the light: sphere_radiance_exact).
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <string>
