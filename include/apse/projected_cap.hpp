@@ -159,7 +159,8 @@ public:
             ct_ = ct / len;
             theta_t_ = detail::angle_of(st_, ct_);
             const T yt = sa * st_;
-            inner_ = inner_area<true>(theta_t_, st_, ct_, std::sqrt((T(1) - yt) * (T(1) + yt)));
+            const T wt = std::sqrt((T(1) - yt) * (T(1) + yt));
+            inner_ = inner_area<true>(theta_t_, st_, ct_, wt, T(1) / (T(1) + wt));
             // beyond theta_t (centre above the horizon only): the ellipse's own band,
             // a' b (x − sin x cos x) from its top, x = pi/2 − theta
             outer_ = cg > T(0) ? ap_ * sa * detail::cap_angle_minus_sin_cos(half_pi_v<T> - theta_t_, ct_, st_) : T(0);
@@ -320,7 +321,7 @@ public:
             width = T(2) * ap_ * cth;
         } else {
             const T yy = sa_ * sth, w = std::sqrt((T(1) - yy) * (T(1) + yy));
-            below = inner_area<false>(detail::min_of(th, theta_t_), sth, cth, w);
+            below = inner_area<false>(detail::min_of(th, theta_t_), sth, cth, w, T(1) / (T(1) + w));
             width = inner_width(cth, w);
         }
         const T u1 = T(0.5) + (q < T(0) ? T(-0.5) : T(0.5)) * (below / half_);
@@ -355,16 +356,24 @@ private:
             cth = sc.c;
             if (last) break;
             const T yy = sa_ * sth, w = std::sqrt((T(1) - yy) * (T(1) + yy));
-            const T g = inner_area<false>(th, sth, cth, w) - target;
+            // 1/w, 1/(1 + w) and 1/(w + x_lo) from one division (w >= cos a: no underflow)
+            const T xlo = x0_ - ap_ * cth, h = ca_ * cg_ + sa_ * sg_ * cth;
+            const bool by_height = xlo > T(0);  // the width as h^2/(w + x_lo) (inner_width)
+            const T wx = by_height ? w + xlo : T(1), w1 = T(1) + w;
+            const T r = T(1) / (w * w1 * wx);
+            const T g = inner_area<false>(th, sth, cth, w, w * wx * r) - target;
             if (!(std::fabs(g) > tol)) break;
             if (g < T(0)) lo = th; else hi = th;
             if (it >= 40 || !(hi - lo > T(4) * epsilon<T>() * hi)) break;
-            const T lw = inner_width(cth, w);
+            const T lw = by_height ? h * h * (w * w1 * r) : w - xlo;
             const T f1 = lw * sa_ * cth;
-            const T dl = -yy * sa_ * cth / w - ap_ * sth;
+            const T dl = -yy * sa_ * cth * (w1 * wx * r) - ap_ * sth;
             const T f2 = dl * sa_ * cth - lw * sa_ * sth;
-            const T d = f1 > T(0) ? f1 - g * f2 / (T(2) * f1) : f1;  // Halley's step through Newton's form
-            T next = th - g / d;
+            // Halley's step n/(1 + n f2/(2 f1)), n = −g/f1, with one division; Newton's where
+            // |g f2| >= f1^2 (its correction would not be small)
+            const T gf2 = g * f2, f11 = f1 * f1;
+            const bool halley = std::fabs(gf2) < f11;
+            T next = th - (halley ? T(2) * g * f1 : g) / (halley ? T(2) * f11 - gf2 : f1);
             const bool inside = next > lo && next < hi;
             if (!inside) next = T(0.5) * (lo + hi);
             if (next == th) break;
@@ -391,7 +400,7 @@ private:
     }
 
     /// The projected area between y = 0 and y = sin a sin theta for theta in [0, theta_t]
-    /// (w = sqrt(1 − y^2)):
+    /// (w = sqrt(1 − y^2), inv_1pw = 1/(1 + w)):
     /// (y w + asin y)/2 − x0 y + a' b (theta + sin theta cos theta)/2, written as
     /// y (1 − x0) + (asin y − y)/2 − y^3/(2 (1 + w)) + a' b (theta + sin theta cos theta)/2 (every
     /// term but the last positive; the last too when the centre is above the horizon).
@@ -400,9 +409,9 @@ private:
     /// y (1 − sin(g − a)) + |a'| b (sin theta (1 − cos theta) − (theta − sin theta))/2
     ///   − (y^3/(2 (1 + w)) − (asin y − y)/2),
     /// whose terms are smaller by the sliver's width (docs/math.md §14).
-    template <bool Precise> APSE_FUNC T inner_area(T th, T sth, T cth, T w) const noexcept {
+    template <bool Precise> APSE_FUNC T inner_area(T th, T sth, T cth, T w, T inv_1pw) const noexcept {
         const T y = sa_ * sth;
-        const T circle = T(0.5) * y * y * y / (T(1) + w) - T(0.5) * detail::asin_minus_identity<Precise>(y, w);  // ∫ (1 − w)
+        const T circle = T(0.5) * y * y * y * inv_1pw - T(0.5) * detail::asin_minus_identity<Precise>(y, w);  // ∫ (1 − w)
         if (cg_ < T(0)) {
             const T band = sth * (sth * sth / (T(1) + cth)) - angle_minus_sine(th, sth);
             return y * d0_ - T(0.5) * ap_ * sa_ * band - circle;
