@@ -93,10 +93,13 @@ template <class T> APSE_FUNC T cap_angle_minus_sin_cos(T x, T s, T c) noexcept {
 /// the horizon — and empty for caps entirely below it. The input square is mapped continuously
 /// and area-preservingly (stratified and QMC points stay stratified). Set-up: one square root
 /// above the horizon; a few square roots, one atan2 and one asin when the horizon cuts the cap.
-/// Per sample: closed form above the horizon (the concentric map, two square roots); 2–4
-/// bracketed Halley steps (polynomial sine and cosine, one square root, one asin only for
-/// |y| >= 1/4) when cut, stopped relative to the area inverted (never a fixed absolute
-/// tolerance) with a hard cap of 40 steps. Trivially copyable; no allocation.
+/// Per sample: closed form above the horizon (the concentric map, two square roots); when cut,
+/// bracketed Halley steps (polynomial sine and cosine, one square root and two divisions each;
+/// 2.7 evaluations per sample on average in double, 2.0 in float, measured over random cut
+/// caps), stopped relative to the area inverted (never a fixed absolute tolerance) with a hard
+/// cap of 40 steps. The samples are continuous in u within each case; where the horizon starts
+/// to cut the cap the map changes from the disk's to the strips' (Omega_perp and the density
+/// are continuous there, the map of u is not). Trivially copyable; no allocation.
 template <class T> class ProjectedCapSampler {
     static_assert(detail::is_real_type<T>(), "apse: ProjectedCapSampler<T>: T must be float or double");
 
