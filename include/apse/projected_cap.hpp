@@ -372,11 +372,10 @@ private:
             const T f1 = lw * sa_ * cth;
             const T dl = -yy * sa_ * cth * (w1 * wx * r) - ap_ * sth;
             const T f2 = dl * sa_ * cth - lw * sa_ * sth;
-            // Halley's step n/(1 + n f2/(2 f1)), n = −g/f1, with one division; Newton's where
-            // |g f2| >= f1^2 (its correction would not be small)
-            const T gf2 = g * f2, f11 = f1 * f1;
-            const bool halley = std::fabs(gf2) < f11;
-            T next = th - (halley ? T(2) * g * f1 : g) / (halley ? T(2) * f11 - gf2 : f1);
+            // Halley's step g/(f1 − g f2/(2 f1)) = 2 g f1/(2 f1^2 − g f2), one division (a step out
+            // of the bracket, e.g. from a negative denominator, becomes a bisection below)
+            const bool positive = f1 > T(0);
+            T next = th - (positive ? T(2) * g * f1 : g) / (positive ? T(2) * f1 * f1 - g * f2 : f1);
             const bool inside = next > lo && next < hi;
             if (!inside) next = T(0.5) * (lo + hi);
             if (next == th) break;
