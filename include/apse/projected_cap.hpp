@@ -91,7 +91,7 @@ template <class T> APSE_FUNC T cap_angle_minus_sin_cos(T x, T s, T c) noexcept {
 /// normal n (file comment; docs/math.md §14): density max(0, n·ω) / Omega_perp in solid angle,
 /// exactly, for caps above the horizon, cut by it (centre above or below it) — no sample below
 /// the horizon — and empty for caps entirely below it. The input square is mapped continuously
-/// and area-preservingly (stratified and QMC points stay stratified). Set-up: one square root
+/// and area-preservingly (stratified and QMC points stay stratified). Set-up: two square roots
 /// above the horizon; a few square roots, an atan2 by polynomials and one asin when the horizon
 /// cuts the cap.
 /// Per sample: closed form above the horizon (the concentric map, two square roots); when cut,
