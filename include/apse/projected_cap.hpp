@@ -28,6 +28,7 @@
 
 #include "config.hpp"
 #include "math.hpp"
+#include "projected_solid_angle.hpp"
 #include "sample.hpp"
 #include "spherical_ellipse.hpp"
 #include "detail/concentric.hpp"
@@ -64,25 +65,6 @@ template <bool Precise, class T> APSE_FUNC T asin_minus_identity(T y, T w) noexc
     }
     if constexpr (Precise) return std::asin(min_of(y, T(1))) - y;
     else return angle_of(y, w) - y;
-}
-
-/// x − sin x cos x for x in [0, pi/2] given s = sin x, c = cos x, without cancellation: the
-/// Taylor series of (2x − sin 2x)/2 below x = 1/2, the difference above (it loses at most a
-/// factor 6 of eps there).
-template <class T> APSE_FUNC T cap_angle_minus_sin_cos(T x, T s, T c) noexcept {
-    if (x < T(0.5)) {
-        const T y2 = T(4) * x * x;
-        T p = T(1) - y2 * T(1.0 / 342.0);
-        p = T(1) - y2 * T(1.0 / 272.0) * p;
-        p = T(1) - y2 * T(1.0 / 210.0) * p;
-        p = T(1) - y2 * T(1.0 / 156.0) * p;
-        p = T(1) - y2 * T(1.0 / 110.0) * p;
-        p = T(1) - y2 * T(1.0 / 72.0) * p;
-        p = T(1) - y2 * T(1.0 / 42.0) * p;
-        p = T(1) - y2 * T(1.0 / 20.0) * p;
-        return T(2.0 / 3.0) * x * x * x * p;  // (2x)^3 / 12 (1 − ...)
-    }
-    return x - s * c;
 }
 
 }  // namespace detail
@@ -167,7 +149,7 @@ public:
             inner_ = inner_area<true>(theta_t_, st_, ct_, wt, T(1) / (T(1) + wt));
             // beyond theta_t (centre above the horizon only): the ellipse's own band,
             // a' b (x − sin x cos x) from its top, x = pi/2 − theta
-            outer_ = cg > T(0) ? ap_ * sa * detail::cap_angle_minus_sin_cos(half_pi_v<T> - theta_t_, ct_, st_) : T(0);
+            outer_ = cg > T(0) ? ap_ * sa * detail::angle_minus_sin_cos(half_pi_v<T> - theta_t_, ct_, st_, T(1)) : T(0);
             half_ = inner_ + outer_;
             area_ = T(2) * half_;
         }
@@ -236,7 +218,7 @@ public:
                 const detail::SinCosValues<T> sc = detail::sin_cos_of_angle(x);
                 sx = sc.s;
                 cx = sc.c;
-                value = detail::cap_angle_minus_sin_cos(x, sx, cx) - target;
+                value = detail::angle_minus_sin_cos(x, sx, cx, T(1)) - target;
                 const T f1 = T(2) * sx * sx, f2 = T(4) * sx * cx;
                 derivative = f1 > T(0) ? f1 - value * f2 / (T(2) * f1) : f1;
             };
@@ -321,7 +303,7 @@ public:
         // x − x_lo = cos g (p + sin a cos theta) + sin g (s − cos a)
         const T dxl = cg_ * (p + sa_ * cth) + sg_ * s_minus_ca;
         if (th > theta_t_ && outer_ > T(0)) {
-            below = half_ - ap_ * sa_ * detail::cap_angle_minus_sin_cos(half_pi_v<T> - th, cth, sth);
+            below = half_ - ap_ * sa_ * detail::angle_minus_sin_cos(half_pi_v<T> - th, cth, sth, T(1));
             width = T(2) * ap_ * cth;
         } else {
             const T yy = sa_ * sth, w = std::sqrt((T(1) - yy) * (T(1) + yy));
