@@ -44,7 +44,10 @@
 
 /// `APSE_HOT_INLINE`: a small per-sample step inlined into its caller on the host (GCC and Clang
 /// weigh inlining by size and otherwise keep the tabulated maps' sample step out of line, a call
-/// per sample; measured ~20 % of the step's instructions). Plain `APSE_FUNC` elsewhere.
+/// per sample; measured ~20 % of the step's instructions), and the short per-shading-point set-ups
+/// of a spherical cap (project_sphere, the radial maps' constructors: out of line, the ellipse is
+/// stored and reloaded through memory, ~15 % of a cap's set-up and sample, measured). Plain
+/// `APSE_FUNC` elsewhere.
 #if !defined(__CUDACC__) && (defined(__GNUC__) || defined(__clang__))
 #define APSE_HOT_INLINE __attribute__((always_inline)) inline
 #else

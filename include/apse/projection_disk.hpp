@@ -116,10 +116,11 @@ APSE_HOT_INLINE SphericalEllipse<T> project_disk_checked(const glm::vec<3, T>& w
     //   cos beta = lambda/B, sin beta = d r/B, 1 − cos beta = d² r²/(B (B + lambda)),
     //   1 − m = cos² alpha / cos² beta = Delta/A², and the centre's polar angle theta_c from zd,
     //   (sin, cos) = (h lambda, d (lambda + r²)) / (A B) (the cone's axis).
-    // Beyond the tangent cap, below the tangent floor, or where lambda² would underflow (subnormal
-    // heights in float), from_tangents builds the ellipse from the two tangents instead (capping,
-    // emptying, rescaling: the rare path).
-    if (tan_alpha <= detail::tan_cap<T>() && tan_beta >= detail::tan_min<T>() &&
+    // Beyond the tangent cap, below the tangent floor, where lambda² would underflow (subnormal
+    // heights in float), or for a circular cone (an exact cap, both tangents equal),
+    // from_tangents builds the ellipse from the two tangents instead (capping, emptying,
+    // rescaling, the cap's equal fields: the rare path, out of the general path's way).
+    if (!circular && tan_alpha <= detail::tan_cap<T>() && tan_beta >= detail::tan_min<T>() &&
         lambda * lambda >= detail::square_safe_min<T>()) {
         const T lr = lambda + r * r;
         T a_root, d_root;
@@ -145,12 +146,6 @@ APSE_HOT_INLINE SphericalEllipse<T> project_disk_checked(const glm::vec<3, T>& w
         e.one_minus_cos_beta = dr * (dr * rb);  // (dr² alone may be subnormal in float)
         e.one_minus_m = delta * inv_a * inv_a;
         e.m = (tan_alpha - tan_beta) * (tan_alpha + tan_beta) * (e.cos_alpha * e.cos_alpha);
-        if (circular) {  // an exact cap: the minor axis's fields are the major axis's
-            e.sin_beta = e.sin_alpha;
-            e.cos_beta = e.cos_alpha;
-            e.one_minus_cos_beta = e.one_minus_cos_alpha;
-            e.one_minus_m = T(1);
-        }
         return e;
     }
     // The centre's polar angle, normalised by rescaling (its norm² may underflow here).

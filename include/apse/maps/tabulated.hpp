@@ -357,7 +357,7 @@ public:
     using vec3 = glm::vec<3, T>;  ///< a 3-D vector (direction, point or normal)
 
     /// Builds the map (as TabulatedMap; empty ellipse or invalid view: pdf 0 everywhere).
-    APSE_HOT_INLINE TabulatedLdRadialMap(const SphericalEllipse<T>& ellipse, const TabulationView& table) noexcept
+    APSE_FUNC TabulatedLdRadialMap(const SphericalEllipse<T>& ellipse, const TabulationView& table) noexcept
         : radial_(ellipse, table) {}
 
     /// The ellipse this map samples.
