@@ -3,7 +3,7 @@
 // why). One kernel per sampler and scalar type; the tabulated maps read a device copy of
 // apse::default_table() through a TabulationView. Prints one line per sampler (the largest
 // differences found) and ends with "N passed, N failed"; exit code 0 if all passed, 1 if not,
-// 77 (skipped) when no CUDA device is present. Built with -DAPSE_RT_GROUP=g (0 to 5) it runs one
+// 77 (skipped) when no CUDA device is present. Built with -DAPSE_RT_GROUP=g (0 to 7) it runs one
 // group of samplers only (tools/gpu_check.sh compiles the groups in parallel).
 #include "runtime_cases.hpp"
 
