@@ -5,6 +5,7 @@
 # Needs only nvcc, a C++17 host compiler and GLM's headers: nothing is downloaded or installed.
 #
 #   tools/gpu_check.sh [--glm DIR] [--arch sm_XX] [--build DIR] [--report FILE] [--archive FILE.tar.gz]
+#                      [--jobs N] [--build-timeout S]
 #
 #   --glm DIR       directory holding glm/vec3.hpp (default: $GLM_INCLUDE_DIR, else the first of
 #                   build/gpu-deps, /usr/include, /usr/local/include that has it)
@@ -12,6 +13,8 @@
 #   --build DIR     where binaries and logs go (default: build/gpu_check)
 #   --report FILE   also write the summary and every program's output to FILE
 #   --archive FILE  also pack the build logs (ptxas -v output included) into FILE (.tar.gz)
+#   --jobs N        at most N nvcc processes at a time (default: all 11 at once)
+#   --build-timeout S  time limit of each nvcc process (default 280 s)
 #
 # The translation units are compiled in parallel (8 runtime-test groups, 3 benchmark groups), so
 # the build takes about as long as the slowest one. Each step has a time limit; the whole check is
@@ -24,6 +27,8 @@ arch=
 build=$root/build/gpu_check
 report=
 archive=
+jobs_max=11
+build_timeout=280
 while [ $# -gt 0 ]; do
   case $1 in
     --glm) glm=$2; shift 2 ;;
@@ -31,7 +36,9 @@ while [ $# -gt 0 ]; do
     --build) build=$2; shift 2 ;;
     --report) report=$2; shift 2 ;;
     --archive) archive=$2; shift 2 ;;
-    -h|--help) sed -n '2,20p' "$0"; exit 0 ;;
+    --jobs) jobs_max=$2; shift 2 ;;
+    --build-timeout) build_timeout=$2; shift 2 ;;
+    -h|--help) sed -n '2,24p' "$0"; exit 0 ;;
     *) echo "gpu_check: unknown option $1 (see --help)"; exit 2 ;;
   esac
 done
@@ -80,7 +87,9 @@ say "- GLM: $glm"
 if [ -z "$arch" ]; then
   probe=$build/arch_probe.cu
   echo '__global__ void k() {} int main() { k<<<1, 1>>>(); return 0; }' > "$probe"
-  if timeout 60 "$nvcc" -arch=native "$probe" -o "$build/arch_probe" > "$build/arch_probe.log" 2>&1; then
+  # (without a visible GPU nvcc warns "Cannot find valid GPU" and uses its default: not native)
+  if timeout 60 "$nvcc" -arch=native "$probe" -o "$build/arch_probe" > "$build/arch_probe.log" 2>&1 &&
+     ! grep -q "Cannot find valid GPU" "$build/arch_probe.log"; then
     arch=native
   else
     arch=sm_90
@@ -93,15 +102,15 @@ say ""
 
 # --- build: every translation unit in parallel ------------------------------------------------
 flags=(-std=c++17 -O3 "$archflag" -Xcompiler -Wall,-Wextra -Xptxas -v -I"$root/include" -I"$glm")
-declare -A pid_of
 build_one() {  # name source define
   local name=$1 src=$2 def=$3
+  rm -f "$build/$name" "$build/$name.build.rc" "$build/$name.out"
+  while [ "$(jobs -rp | wc -l)" -ge "$jobs_max" ]; do wait -n; done
   ( s=$(date +%s.%N)
-    timeout 280 "$nvcc" "${flags[@]}" "$def" "$src" -o "$build/$name" > "$build/$name.build.log" 2>&1
+    timeout "$build_timeout" "$nvcc" "${flags[@]}" "$def" "$src" -o "$build/$name" > "$build/$name.build.log" 2>&1
     rc=$?
     e=$(date +%s.%N)
     echo "$rc $(awk -v a="$s" -v b="$e" 'BEGIN { printf "%.1f", b - a }')" > "$build/$name.build.rc" ) &
-  pid_of[$name]=$!
 }
 rt_groups=8
 bench_groups=3
@@ -120,7 +129,8 @@ names=()
 for g in $(seq 0 $((rt_groups - 1))); do names+=("runtime_test_g$g"); done
 for g in $(seq 0 $((bench_groups - 1))); do names+=("throughput_g$g"); done
 for n in "${names[@]}"; do
-  read -r rc secs < "$build/$n.build.rc"
+  rc=missing secs=-
+  [ -f "$build/$n.build.rc" ] && read -r rc secs < "$build/$n.build.rc"
   if [ "$rc" = 0 ]; then r=ok; passed=$((passed + 1)); else r="FAILED (rc $rc, $build/$n.build.log)"; failed=$((failed + 1)); fi
   say "| $n | $secs | $r |"
 done

@@ -10,22 +10,35 @@
 // Programming Guide, "Mathematical Functions": 2 ulps for sinf/cosf/asinf/acosf, 3 for atan2f,
 // 2 for the double ones; sqrt and division are correctly rounded without --use_fast_math).
 //
-// The acceptance rule, in two steps:
+// The acceptance rule, per output (a case passes when every output passes):
 // 1. direct: |device - host| <= kDirect eps (absolute for the direction and invert, unit
-//    scale; relative for pdf and distance). kDirect = 64: the outputs pass through ~100
-//    operations (projection, an R_J, a Newton inversion, the frame change), each of which may
-//    round differently by 1 ulp (FMA) or 2 ulps (device transcendentals); errors of well-
-//    conditioned outputs add, not multiply, so 64 eps is a few times the worst such sum.
-// 2. neighbourhood, for the outputs that are ill-conditioned or discontinuous in their inputs
-//    (a grazing disk's pdf loses digits with the distance to its plane; a tabulated map's pdf
-//    jumps at its bins' edges; the rim test of pdf(w); a rejection sampler's acceptance): the
-//    device output must lie within the range the host's own output spans when the inputs move
-//    by kNeighbour eps (relative: the shading point by kNeighbour eps |c - o|, the normals,
-//    radius and w by kNeighbour eps of their size, u by kNeighbour eps), widened by kDirect eps.
-//    kNeighbour = 16: a rounding difference of a few ulps in an intermediate value acts like a
-//    relative perturbation of that size of the inputs it was computed from; 16 covers the
-//    2-ulp transcendentals feeding the set-up with a factor ~4 to spare. An output that moves
-//    more than this is a real difference (a wrong table, a different branch of the code).
+//    scale; relative to the larger of the two for pdf and distance; invert's u1 modulo 1, an
+//    azimuth for the radial maps). kDirect = 64: the outputs pass through ~100 operations
+//    (projection, an R_J, a Newton inversion, the frame change), each of which may round
+//    differently by 1 ulp (FMA) or 2 ulps (device transcendentals); for well-conditioned outputs
+//    these add, so 64 eps is a few times the worst such sum.
+// 2. neighbourhood, for the outputs that are ill-conditioned or discontinuous in their inputs (a
+//    grazing disk's pdf loses digits with the distance to its plane; a tabulated map's pdf jumps
+//    at its bins' edges; the rim test of pdf(w); a rejection sampler's acceptance; a far light
+//    spans only a few ulps of direction, so w's place in it is set by rounding): the device's
+//    output must lie within the range of the host's outputs when the inputs move by up to
+//    kNeighbour eps (the shading point by that many eps of |c - o|, the normals, radius and w by
+//    that many eps of their size, u by that many eps), widened by kDirect eps. The range is
+//    sampled: all inputs at once with random signs, w and u alone the same way, at 4, 2, 1, 1/2
+//    and 1/4 eps, and each input coordinate alone by +-4 and +-1 eps. kNeighbour = 4: a rounding
+//    difference of an ulp or two in an intermediate value acts like a relative perturbation of
+//    about that size of the inputs it was computed from.
+// 3. round trip, for invert(w) with w in the light or on its rim: the host's sample of the
+//    device's point must be as close to w as the host's sample of its own point (within a
+//    factor 2, plus kDirect eps): invert is judged by how well it reproduces w, which stays
+//    well-conditioned where the point of the square does not (thin and far lights).
+// 4. singular points (near_singular_point): at the centre of the light's ellipse and at the ends
+//    of its minor axis invert(w) is arbitrary in one coordinate and the tabulated density is a
+//    limit computed in a branch of its own; pdf(w) and invert(w) are not compared there, and the
+//    cases are counted.
+// An output that differs by more than this is a real difference (a wrong table, another branch
+// of the code). ctest cuda_runtime_model runs this comparison against an FMA-contracted CPU build
+// of the same evaluation (the device's other difference, its transcendentals, is not modelled).
 // Every output of both sides must be finite (pdf 0 marks "no sample"; directions stay unit).
 #pragma once
 
