@@ -243,7 +243,7 @@ inline double plane_reference_selfcheck(const Scene& s) {
 /// and cos θ = n·(c − p)/d: π sin²σ cos θ while the whole cap is above the horizon (cos θ ≥
 /// sin σ), 0 below it (cos θ ≤ −sin σ), and between them the classical form factor of a
 /// differential area to a sphere cut by its plane (as in Lagarde & de Rousiers 2014, "Moving
-/// Frostbite to PBR", §4.7): with x = cot σ, y = −x cot θ,
+/// Frostbite to PBR", area lights): with x = cot σ, y = −x cot θ,
 ///   E = (cos θ acos y − x sin θ √(1 − y²)) sin²σ + atan(sin θ √(1 − y²) / x).
 /// Checked against quadrature by sphere_reference_selfcheck().
 inline double sphere_irradiance(const glm::dvec3& p, const glm::dvec3& n, const glm::dvec3& c, double r) {
@@ -288,7 +288,8 @@ inline double sphere_radiance_exact(const Scene& s, const glm::dvec3& p) {
 
 /// Max relative error of sphere_irradiance against a 600 × 600 midpoint quadrature over the
 /// cap (in cos θ' and φ about its axis: dω = d cos θ' dφ) for receivers with the cap above,
-/// cut by and mostly below their horizon (expected ~1e-5: the quadrature's error at the kink).
+/// cut by and mostly below their horizon (~1e-7: the quadrature's error, from the cells the
+/// horizon's kink crosses).
 inline double sphere_reference_selfcheck(const Scene& s) {
     const double pi = 3.14159265358979323846, r = s.lamp.radius;
     const glm::dvec3 c(s.lamp.center);
