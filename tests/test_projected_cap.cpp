@@ -471,3 +471,92 @@ TEMPLATE_TEST_CASE("projected cap: bad input", "[cosine][cap][robust]", float, d
     }
     static_assert(std::is_trivially_copyable<apse::ProjectedCapSampler<T>>::value, "pass it to kernels by value");
 }
+
+TEMPLATE_TEST_CASE("projected cap: extreme normals (tiny, huge, subnormal components, cos g or sin g 0 or subnormal)",
+                   "[cosine][cap][robust]", float, double) {
+    using T = TestType;
+    using L = std::numeric_limits<T>;
+    // The regression: o = (3, 3, 3), c = (−3, 3, 3), r = 3 and a normal whose largest component
+    // is DBL_MAX (the scaled normal's other components subnormal, cos g subnormal): NaN
+    // directions at the corners of the square. Then every normal with components from a set of
+    // extreme values (0, the smallest subnormal, the smallest normal, about its square root (the
+    // square subnormal or normal), near 1,
+    // huge, the largest) for caps centred on an axis (so cos g and sin g are 0, subnormal or
+    // tiny) of radius tiny to near a hemisphere: a finite unit direction, a finite pdf >= 0
+    // that, when positive, is max(0, n·ω)/Omega_perp (the reported Omega_perp, the cosine from
+    // the direction), and an inverse inside the square.
+    const T values[] = {T(0), L::denorm_min(), L::min(), std::sqrt(L::min()) / T(1000), std::sqrt(L::min()), T(1e-8), T(0.99999904632568359), T(1),
+                        std::sqrt(L::max()), L::max()};
+    const Vec3<T> o(T(3), T(3), T(3));
+    const T radii[] = {T(3), T(3e-6), T(5.99)};
+    const Vec2<T> us[] = {Vec2<T>(0, 0), Vec2<T>(0, 1), Vec2<T>(1, 0), Vec2<T>(1, 1), Vec2<T>(T(0.5), T(0.5)),
+                          Vec2<T>(T(0.5), 0), Vec2<T>(0, T(0.5)), Vec2<T>(T(1e-7), T(0.999)), Vec2<T>(T(0.9999999), T(0.25))};
+    int bad_direction = 0, bad_pdf = 0, bad_invert = 0, sampled = 0;
+    auto run = [&](const apse::SphericalEllipse<T>& cap, const Vec3<T>& n) {
+        const apse::ProjectedCapSampler<T> s(cap, n);
+        const double psa = double(s.projected_solid_angle());
+        if (!(std::isfinite(psa) && psa >= 0)) ++bad_pdf;
+        // the unit normal in long double (scaled by its largest component first)
+        const LD mx = std::max({std::fabs(LD(n.x)), std::fabs(LD(n.y)), std::fabs(LD(n.z))});
+        const LD nx = LD(n.x) / mx, ny = LD(n.y) / mx, nz = LD(n.z) / mx, nl = std::sqrt(nx * nx + ny * ny + nz * nz);
+        const glm::dvec3 nd = mx > 0 ? glm::dvec3(double(nx / nl), double(ny / nl), double(nz / nl)) : glm::dvec3(0);
+        for (const Vec2<T>& u : us) {
+            const auto d = s.sample(u);
+            const glm::dvec3 w(d.direction);
+            if (!(std::isfinite(w.x) && std::isfinite(w.y) && std::isfinite(w.z)) || !(std::fabs(glm::length(w) - 1) <= 16 * eps<T>())) {
+                ++bad_direction;
+                INFO("direction " << w.x << " " << w.y << " " << w.z << " n " << n.x << " " << n.y << " " << n.z);
+                CHECK(false);
+                continue;
+            }
+            const double pdf = double(d.pdf);
+            // the cosine from the direction: its rounding, a few eps of T absolute
+            if (!(std::isfinite(pdf) && pdf >= 0) || (pdf > 0 && !(std::fabs(pdf * psa - glm::dot(nd, w)) <= 16 * eps<T>()))) {
+                ++bad_pdf;
+                INFO("pdf " << pdf << " psa " << psa << " cos " << glm::dot(nd, w) << " n " << n.x << " " << n.y << " " << n.z);
+                CHECK(false);
+            }
+            if (pdf > 0) ++sampled;
+            const Vec2<T> v = s.invert(d.direction);
+            if (!(v.x >= T(0) && v.x <= T(1) && v.y >= T(0) && v.y <= T(1))) ++bad_invert;
+        }
+    };
+    if (sizeof(T) == sizeof(double)) {
+        const auto cap = apse::project_sphere(o, Vec3<T>(T(-3), T(3), T(3)), T(3));
+        run(cap, Vec3<T>(T(-1), T(0.99999904632568359), -L::max()));
+    }
+    std::vector<apse::SphericalEllipse<T>> caps;
+    for (int axis = 0; axis < 3; ++axis) {
+        for (const T r : radii) {
+            Vec3<T> c = o;
+            c[axis] -= T(6);
+            caps.push_back(apse::project_sphere(o, c, r));
+        }
+        // angular radius sqrt of the smallest normal (Omega_perp subnormal: its reciprocal
+        // would overflow) and far below it (Omega_perp 0)
+        const Vec3<T> ex(T(1), T(0), T(0)), ey(T(0), T(1), T(0)), ez(T(0), T(0), T(1));
+        for (const T a : {std::sqrt(L::min()), T(1e-30) * std::sqrt(L::min())}) {
+            caps.push_back(axis == 0 ? apse::SphericalEllipse<T>::from_arcs(ey, ez, ex, a, a)
+                                     : axis == 1 ? apse::SphericalEllipse<T>::from_arcs(ez, ex, ey, a, a)
+                                                 : apse::SphericalEllipse<T>::from_arcs(ex, ey, ez, a, a));
+        }
+    }
+    int cap_count = 0;
+    for (const auto& cap : caps) {
+        if (!cap.is_cap()) continue;  // the tiniest: the ellipse's own set-up may decline it
+        ++cap_count;
+        {
+            for (const T x : values)
+                for (const T y : values)
+                    for (const T z : values)
+                        for (int signs = 0; signs < 8; ++signs)
+                            run(cap, Vec3<T>(signs & 1 ? -x : x, signs & 2 ? -y : y, signs & 4 ? -z : z));
+        }
+    }
+    INFO(type_name<T>() << ": " << sampled << " samples with pdf > 0");
+    CHECK(bad_direction == 0);
+    CHECK(bad_pdf == 0);
+    CHECK(bad_invert == 0);
+    CHECK(sampled > 10000);
+    CHECK(cap_count >= 12);
+}

@@ -102,14 +102,29 @@ public:
         if (!cap.is_cap()) return;
         const T scale = detail::max_abs3(receiver_normal);
         if (!(scale > T(0)) || !detail::is_finite(scale) || !detail::finite3(receiver_normal)) return;
-        const vec3 v = receiver_normal * (T(1) / scale);  // largest component ±1: |v|^2 in [1, 3]
+        // |n|^2 directly where it neither overflows nor loses digits to underflow; otherwise n
+        // divided by its largest component first (a division: its reciprocal may be subnormal)
+        const vec3 v = scale >= tiny_square_root() && scale <= T(1) / tiny_square_root() ? receiver_normal : receiver_normal / scale;
         const vec3 n = v * (T(1) / std::sqrt(glm::dot(v, v)));
         const vec3 nl = cap.to_local(n);
-        // n is unit: no overflow; a sin g below ~1e-154 (double) underflows to 0, i.e. n ∥ c
-        const T sg = std::sqrt(nl.x * nl.x + nl.y * nl.y), cg = nl.z;
-        // e1: the unit tangent at the centre pointing away from n (any one when n ∥ c), e2 = c × e1
-        const T inv_sg = sg > T(0) ? T(1) / sg : T(0);
-        const T e1x = sg > T(0) ? -nl.x * inv_sg : T(1), e1y = -nl.y * inv_sg;
+        // sin g and e1 (the unit tangent at the centre pointing away from n, any one when n ∥ c;
+        // e2 = c × e1): from the squares where these keep their digits, from the components
+        // divided by the larger one where they would be subnormal (e1 stays unit)
+        T sg = std::sqrt(nl.x * nl.x + nl.y * nl.y), e1x = T(1), e1y = T(0);
+        if (sg >= tiny_square_root()) {
+            const T inv_sg = T(1) / sg;
+            e1x = -nl.x * inv_sg;
+            e1y = -nl.y * inv_sg;
+        } else {
+            const T big = detail::max_of(std::fabs(nl.x), std::fabs(nl.y));
+            if (big > T(0)) {
+                const T qx = nl.x / big, qy = nl.y / big, len = std::sqrt(qx * qx + qy * qy);
+                sg = big * len;
+                e1x = -qx / len;
+                e1y = -qy / len;
+            }
+        }
+        const T cg = nl.z;
         const T sa = cap.sin_alpha, ca = cap.cos_alpha;
         const T cos_sum = cg * ca - sg * sa;   // cos(g + a): the rim's lowest point's height
         const T cos_diff = cg * ca + sg * sa;  // cos(g − a): its highest point's height
@@ -155,6 +170,7 @@ public:
         }
         if (!(area_ > T(0)) || !detail::is_finite(area_)) return;
         inv_area_ = T(1) / area_;
+        if (!detail::is_finite(inv_area_)) return;  // a subnormal Omega_perp: no finite density
         empty_ = false;
     }
 
@@ -256,8 +272,11 @@ public:
         h = detail::max_of(h, T(0));
         // the cap frame's components, from the rim point (x_lo, y, h) = −sin a cos theta e1 + y e2 + cos a c:
         // p − p_rim = cos g du − sin g (z − h), z − h = −du (x + x_lo)/(z + h)
+        // (|z − h| <= z + h bounds the quotient: z + h may be subnormal, e.g. for cos g subnormal
+        // at the top of the region, where du vanishes with it)
         const T zh = z + h;
-        const T p = -sa_ * c_th + du * (cg_ + (zh > T(0) ? sg_ * (x + xlo) / zh : T(0)));
+        const T zmh = zh > T(0) ? detail::clamp(du * (x + xlo) / zh, -zh, zh) : T(0);
+        const T p = -sa_ * c_th + du * cg_ + sg_ * zmh;
         const T q = side * yy;
         const T s = sg_ * x + cg_ * z;
         const vec3 dir = p * e1_ + q * e2_ + s * c_;
@@ -320,6 +339,10 @@ private:
     /// T, above the rounding of the area evaluated per step (a few eps; a tighter rule would only
     /// make the last steps chase rounding).
     static APSE_FUNC constexpr T tolerance() noexcept { return T(16) * epsilon<T>(); }
+
+    /// A magnitude whose square is far enough above the subnormals (2^-960 in double, 2^-100 in
+    /// float) that a sum of squares of numbers up to it loses nothing to their underflow.
+    static APSE_FUNC constexpr T tiny_square_root() noexcept { return sizeof(T) == sizeof(float) ? T(0x1p-50) : T(0x1p-480); }
 
     /// The Halley step (relative to the distance from theta to theta_t, where the region's width
     /// may vanish and with it H') below which the step is the last one, taken without evaluating
