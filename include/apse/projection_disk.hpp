@@ -105,7 +105,8 @@ APSE_HOT_INLINE SphericalEllipse<T> project_disk_checked(const glm::vec<3, T>& w
     // 4 eps of each other (on the axis they are <= 2 eps apart, measured) are made exactly equal,
     // so that the maps take their closed-form cap path (docs/math.md §2b, Caps under rounding).
     // The shape, the solid angle and the pdf move by at most 4 eps relative.
-    const bool circular = on_axis || tan_alpha - tan_beta <= T(4) * epsilon<T>() * tan_alpha;
+    // (Tangents that came out exactly equal already are a cap: they keep the closed form below.)
+    const bool circular = tan_beta != tan_alpha && (on_axis || tan_alpha - tan_beta <= T(4) * epsilon<T>() * tan_alpha);
     tan_beta = circular ? tan_alpha : detail::min_of(tan_beta, tan_alpha);
     const vec3 yd = on_axis ? detail::any_perpendicular(zd) : v * (T(1) / hv);
     const vec3 xd = glm::cross(yd, zd);
