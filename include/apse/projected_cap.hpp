@@ -238,7 +238,7 @@ public:
         const T side = v < T(0) ? T(-1) : T(1);
         const T f = std::fabs(v);
         const T rest = (T(1) - f) * half_;  // the area beyond y, towards the top
-        T s_th, c_th, width, gap, xlo, h;
+        T s_th, c_th, yy, w, width, gap, xlo, h;  // w = sqrt(1 − y^2), y = sin a sin theta
         if (rest < outer_) {
             // the ellipse's band: a' b E(x) = rest, x = pi/2 − theta, E(x) = x − sin x cos x
             const T target = rest / (ap_ * sa_);
@@ -259,15 +259,16 @@ public:
             width = T(2) * ap_ * c_th;
             xlo = x0_ - ap_ * c_th;
             const T hr = detail::max_of(ca_ * cg_ - sa_ * sg_ * c_th, T(0));  // the right rim point's height
-            const T yy = sa_ * s_th;
-            const T w = std::sqrt((T(1) - yy) * (T(1) + yy));
+            yy = sa_ * s_th;
+            w = std::sqrt((T(1) - yy) * (T(1) + yy));
             gap = hr * hr / (w + x0_ + ap_ * c_th);
             h = ca_ * cg_ + sa_ * sg_ * c_th;
         } else {
             const T target = f * half_;
             const T guess = first_guess(inner_ > T(0) ? detail::min_of(target / inner_, T(1)) : T(0)) * theta_t_;
             solve_inner(target, guess, s_th, c_th);
-            const T yy = sa_ * s_th, w = std::sqrt((T(1) - yy) * (T(1) + yy));
+            yy = sa_ * s_th;
+            w = std::sqrt((T(1) - yy) * (T(1) + yy));
             width = inner_width(c_th, w);
             xlo = x0_ - ap_ * c_th;
             gap = T(0);
@@ -276,8 +277,6 @@ public:
         // x = x_lo + u2 L; the height z from w^2 − x^2 = (w − x)(w + x), w − x = gap + (1 − u2) L
         const T du = uc.y * width;
         const T x = xlo + du;
-        const T yy = sa_ * s_th;
-        const T w = std::sqrt((T(1) - yy) * (T(1) + yy));
         const T z = std::sqrt(detail::max_of((gap + (T(1) - uc.y) * width) * (w + x), T(0)));
         h = detail::max_of(h, T(0));
         // the cap frame's components, from the rim point (x_lo, y, h) = −sin a cos theta e1 + y e2 + cos a c:
