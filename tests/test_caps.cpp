@@ -321,7 +321,7 @@ TEMPLATE_TEST_CASE("caps: project_sphere in closed form", "[caps][projection]", 
     // Every field against long double closed forms of D and R (tan alpha = R/sqrt((D − R)(D + R)),
     // sin alpha = R/D, cos alpha = sqrt((D − R)(D + R))/D, 1 − cos alpha = R^2/(D (D + L))), with
     // the inputs rounded to T first: within 8 eps (a few roundings each) plus, for L, the rounding
-    // of D^2 amplified by D/(D − R) (documented; 2 eps D/(D − R) bounds it). Scene scales
+    // of D amplified by D/(D − R) (documented; 2 eps D/(D − R) bounds it). Scene scales
     // from 2^-60 to 2^60 (float) / 2^-500 to 2^500 (double): the same tangent.
     const int emax = sizeof(T) == 4 ? 60 : 500;
     for (int k = -emax; k <= emax; k += emax / 5) {

@@ -208,13 +208,11 @@ APSE_HOT_INLINE SphericalEllipse<T> project_sphere(const glm::vec<3, T>& o, cons
         p = sc(p0);
         r = sc(T(radius));
     }
-    // D and L = sqrt(D^2 − R^2) by one paired square root (detail::sqrt2): D^2 − R^2 is as
-    // accurate as (D − R)(D + R) here, since D itself comes from the rounded D^2 (relative error
-    // of either ~eps D/(D − R) near the surface, ~2 eps far from it).
-    const T d2 = glm::dot(p, p), l2 = d2 - r * r;
-    if (!(l2 > T(0))) return E::make_empty();
-    T dist, l;
-    detail::sqrt2(d2, l2, dist, l);
+    // L = sqrt((D − R)(D + R)): no product to contract into an FMA, so the result does not depend
+    // on the compiler's contraction (D^2 − R^2 would, by ~eps D/(D − R) relative).
+    const T dist = std::sqrt(glm::dot(p, p));
+    if (!(dist > r)) return E::make_empty();
+    const T l = std::sqrt((dist - r) * (dist + r));
     // Duff, Burgess, Christensen, Hery, Kensler, Liani, Villemin, "Building an Orthonormal Basis,
     // Revisited" (JCGT 2017), for z = p / D: right-handed, continuous except where z.z changes
     // sign. Its divisor −1/(sign + z.z) = −D/(sign D + p.z) is paired with 1/D, and
