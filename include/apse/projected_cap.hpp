@@ -140,8 +140,8 @@ public:
         if (!(cos_diff > T(0))) return;        // entirely below the horizon
         e_ = cap;
         c_ = cap.z;
-        e1_ = cap.to_world(vec3(e1x, e1y, T(0)));
-        e2_ = cap.to_world(vec3(-e1y, e1x, T(0)));
+        e1_ = e1x * cap.x + e1y * cap.y;  // the cap frame's (e1x, e1y, 0) and (−e1y, e1x, 0) in world space
+        e2_ = e1x * cap.y - e1y * cap.x;
         n_ = n;
         sg_ = sg;
         cg_ = cg;
