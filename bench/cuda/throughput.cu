@@ -87,9 +87,11 @@ using Kinds = KindList<BArea, BCosLd, BCosTabulatedLd, BSphereLd, BSphereCosLd>;
 #endif
 
 /// One thread per shading point: the set-up, then S samples; the sum of the results is written
-/// so that nothing is optimised away.
+/// so that nothing is optimised away. No __launch_bounds__: ptxas allots registers as it does for
+/// a renderer's kernel written plainly (with __launch_bounds__(128) it capped most of them at 128
+/// or 168 registers and spilled up to ~0.8 KB per thread).
 template <class Kind, int S, class T>
-__global__ void __launch_bounds__(128) throughput_kernel(Inputs<T> in, T* out, int n) {
+__global__ void throughput_kernel(Inputs<T> in, T* out, int n) {
     const int i = blockIdx.x * blockDim.x + threadIdx.x;
     if (i >= n) return;
     const auto sampler = Kind::template make<T>(in, i);
