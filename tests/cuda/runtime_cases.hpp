@@ -520,10 +520,13 @@ Tally compare(const std::vector<Config<T>>& configs, const std::vector<Case<T>>&
                 std::printf("  FAIL %s [%s] config \"%s\" u = (%.9g, %.9g): %s\n", Kind::name,
                             Kind::variants > 1 ? variant_name(variant) : "", names[k.config].name, double(k.u.x),
                             double(k.u.y), bad_field < 0 ? "non-finite output" : group_name(field_group(bad_field)));
-                std::printf("    host   dir (%.9g %.9g %.9g) pdf %.9g dist %.9g pdf(w) %.9g invert (%.9g %.9g)\n", h[0], h[1],
-                            h[2], h[3], h[4], h[5], h[6], h[7]);
-                std::printf("    device dir (%.9g %.9g %.9g) pdf %.9g dist %.9g pdf(w) %.9g invert (%.9g %.9g)\n", d[0], d[1],
-                            d[2], d[3], d[4], d[5], d[6], d[7]);
+                const int p = std::numeric_limits<T>::max_digits10;
+                for (int side = 0; side < 2; ++side) {
+                    const double* v = side == 0 ? h : d;
+                    std::printf("    %s dir (%.*g %.*g %.*g) pdf %.*g dist %.*g pdf(w) %.*g invert (%.*g %.*g)\n",
+                                side == 0 ? "host  " : "device", p, v[0], p, v[1], p, v[2], p, v[3], p, v[4], p, v[5], p, v[6],
+                                p, v[7]);
+                }
             }
             ++t.failed;
         }
@@ -565,8 +568,9 @@ void run_all(Device& device, KindList<K...>, const apse::TabulationView& host_vi
 
 inline void print_header() {
     std::printf("Max |device - host| of the cases within the direct bound (%g eps), in eps of T (relative for pdf,\n"
-                "dist, pdf(w)). nbhd: cases passed by the neighbourhood or round-trip rule; sing: cases whose w is\n"
-                "a singular point of the maps (pdf(w), invert not compared); nonfin: non-finite outputs, device/host.\n\n",
+                "dist, pdf(w)). nbhd: cases beyond it passed by rules 2-5 (runtime_cases.hpp); sing: those of them\n"
+                "whose w is a singular point of the maps (pdf(w), invert not compared); nonfin: non-finite outputs,\n"
+                "device/host.\n\n",
                 kDirect);
     std::printf("| %-47s | %-6s | %5s | %4s | %4s | %4s | %7s | %8s | %8s | %8s | %8s | %8s | %s |\n", "sampler", "T", "cases",
                 "fail", "nbhd", "sing", "nonfin", "dir", "pdf", "dist", "pdf(w)", "invert", "result");
