@@ -374,7 +374,7 @@ TEMPLATE_TEST_CASE("caps: project_sphere in closed form", "[caps][projection]", 
 
 TEMPLATE_TEST_CASE("caps: circles under rounding are exact caps", "[caps][projection]", float, double) {
     using T = TestType;
-    // A disk seen along its axis, a circle (project_ellipse) on its axis and a sphere given to
+    // A disk seen along its axis, a circle (project_ellipse) on its axis, and a sphere given to
     // project_ellipsoid are circular cones; their tangents come out within a few eps of each
     // other and are made exactly equal (docs/math.md §2b, Caps under rounding). The effect on the
     // pdf is bounded by the snap threshold: 1/Omega within 8 eps (+ the projections' own
@@ -383,7 +383,9 @@ TEMPLATE_TEST_CASE("caps: circles under rounding are exact caps", "[caps][projec
     double worst_circle = 0, worst_sphere = 0;
     for (int i = 0; i < 200; ++i) {
         const glm::dvec3 nd = glm::normalize(glm::dvec3(rng.uniform<double>() - 0.5, rng.uniform<double>() - 0.5, rng.uniform<double>() - 0.5));
-        const glm::dvec3 cd(4 * rng.uniform<double>() - 2, 4 * rng.uniform<double>() - 2, 4 * rng.uniform<double>() - 2);
+        // the disk's centre at the origin: o = d n, so o − c lies on the axis to within its rounding
+        // (with a centre far from the origin the rounding of o = c + d n moves o off the axis)
+        const glm::dvec3 cd(0.0);
         const double r = std::exp(4 * rng.uniform<double>() - 2), d = r * std::exp(6 * rng.uniform<double>() - 3);
         const Vec3<T> n(nd), c(cd);
         const Vec3<T> o = c + T(d) * n;

@@ -101,12 +101,12 @@ APSE_HOT_INLINE SphericalEllipse<T> project_disk_checked(const glm::vec<3, T>& w
         sin_c = T(2) * d * h;
         cos_c = T(2) * d * d + big_d;
     }
-    // On the axis the cone is circular, and within a rounding of it nearly so: tangents within
-    // 4 eps of each other (on the axis they are <= 2 eps apart, measured) are made exactly equal,
-    // so that the maps take their closed-form cap path (docs/math.md §2b, Caps under rounding).
-    // The shape, the solid angle and the pdf move by at most 4 eps relative.
-    // (Tangents that came out exactly equal already are a cap: they keep the closed form below.)
-    const bool circular = tan_beta != tan_alpha && (on_axis || tan_alpha - tan_beta <= T(4) * epsilon<T>() * tan_alpha);
+    // On the axis (the offset below the rounding of w) the cone is circular: its tangents, <= 2
+    // eps apart there (measured), are made exactly equal, so that the maps take their closed-form
+    // cap path (docs/math.md §2b, Caps under rounding); the solid angle and the pdf move by at most
+    // 2 eps relative. Off the axis the tangents are kept as computed (tangents that came out
+    // exactly equal are a cap as they are and keep the closed form below).
+    const bool circular = on_axis && tan_beta != tan_alpha;
     tan_beta = circular ? tan_alpha : detail::min_of(tan_beta, tan_alpha);
     const vec3 yd = on_axis ? detail::any_perpendicular(zd) : v * (T(1) / hv);
     const vec3 xd = glm::cross(yd, zd);
@@ -171,10 +171,10 @@ APSE_HOT_INLINE SphericalEllipse<T> project_disk_checked(const glm::vec<3, T>& w
 /// too (no trigonometric call; docs/projection.md "Methods").
 /// Domain: `normal` any finite non-zero vector (only its direction is used: it is normalised);
 /// `radius` > 0; two-sided (use `disk_faces` to cull one-sided emitters).
-/// On the disk's axis alpha = beta exactly (SphericalEllipse::is_cap(): tangents within 4 eps of
-/// each other are made equal, docs/math.md §2b "Caps under rounding", so the maps take their
-/// closed-form cap path; the solid angle moves by at most 4 eps relative) and the frame is a
-/// deterministic function of the normal.
+/// On the disk's axis (o − center along the normal to within its rounding) alpha = beta exactly
+/// (SphericalEllipse::is_cap(): the tangents are made equal, docs/math.md §2b "Caps under
+/// rounding", so the maps take their closed-form cap path; the solid angle moves by at most 2 eps
+/// relative) and the frame is a deterministic function of the normal.
 /// Empty (Omega = 0) for: o in the disk's plane (including o on the disk or its rim: the
 /// emitter's own surface), radius <= 0, zero or non-finite normal, NaN/Inf anywhere, lights with
 /// tan(beta) below detail::tan_min<T>(). Measure: solid angle (two-sided, the disk's projected
