@@ -473,9 +473,11 @@ TEMPLATE_TEST_CASE("projected cap: bad input", "[cosine][cap][robust]", float, d
 }
 
 TEMPLATE_TEST_CASE("projected cap: extreme normals (tiny, huge, subnormal components, cos g or sin g 0 or subnormal)",
-                   "[cosine][cap][robust]", float, double) {
+                   "[cap][robust][extreme]", float, double) {
     using T = TestType;
     using L = std::numeric_limits<T>;
+    // Tags [extreme] and no [cosine]: not kept under -ffast-math, whose flush-to-zero and
+    // reciprocals (n / s as n (1/s), 1/s subnormal) change the inputs and intermediates tested.
     // The regression: o = (3, 3, 3), c = (−3, 3, 3), r = 3 and a normal whose largest component
     // is DBL_MAX (the scaled normal's other components subnormal, cos g subnormal): NaN
     // directions at the corners of the square. Then every normal with components from a set of

@@ -27,6 +27,7 @@
 /// the square's seam. The map itself serves a zero or NaN normal (the plain map).
 
 #include <cmath>
+#include <new>
 #include <type_traits>
 
 #include "config.hpp"
@@ -129,7 +130,7 @@ public:
             return;
         }
         if (base_.ellipse().is_cap()) {
-            w_.cap = ProjectedCapSampler<T>(base_.ellipse(), normal);
+            new (&w_.cap) ProjectedCapSampler<T>(base_.ellipse(), normal);  // built in place: no copy of the sampler
             if (!w_.cap.empty()) mode_ = Mode::cap;
             return;
         }
