@@ -186,7 +186,10 @@ public:
             area_ = T(2) * half_;
             // the slopes of H/inner in theta/theta_t at 0 and at theta_t (the first guess's model):
             // H'(0) = L(0) b, L(0) = 1 − x0 + a'; H'(theta_t) = 2 a' cos theta_t b cos theta_t
-            const T k = inner_ > T(0) ? sa * theta_t_ / inner_ : T(0);
+            // 1/inner, 0 where it is not finite (an empty or subnormal inner piece: the guess is then 0)
+            const T ri = inner_ > T(0) ? T(1) / inner_ : T(0);
+            inv_inner_ = detail::is_finite(ri) ? ri : T(0);
+            const T k = sa * theta_t_ * inv_inner_;
             m0_ = (cg >= T(0) ? one_minus_x0_ + ap_ : d0_) * k;
             m1_ = cg > T(0) ? T(2) * ap_ * ct_ * ct_ * k : T(0);
         }
@@ -272,7 +275,7 @@ public:
             h = ca_ * cg_ + sa_ * sg_ * c_th;
         } else {
             const T target = f * half_;
-            const T guess = first_guess(inner_ > T(0) ? detail::min_of(target / inner_, T(1)) : T(0)) * theta_t_;
+            const T guess = first_guess(detail::min_of(target * inv_inner_, T(1))) * theta_t_;
             solve_inner(target, guess, s_th, c_th);
             yy = sa_ * s_th;
             w = std::sqrt((T(1) - yy) * (T(1) + yy));
@@ -508,6 +511,7 @@ private:
     T inner_{}, outer_{};        ///< the areas of y in [0, y_t] and [y_t, b] (half the visible region each side)
     T half_{};                   ///< half the projected solid angle
     T m0_{}, m1_{};              ///< the slopes of H/inner in theta/theta_t at 0 and theta_t (first_guess)
+    T inv_inner_{};              ///< 1 / inner_ (0 if inner_ is 0)
     T area_{};                   ///< the projected solid angle
     T inv_area_{};               ///< 1 / area_
     bool cut_ = false;           ///< the horizon cuts the cap
