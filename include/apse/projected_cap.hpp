@@ -177,7 +177,7 @@ public:
             ct_ = detail::min_of(ct * inv_len, T(1));
             theta_t_ = detail::angle_of(st_, ct_);
             const T yt = sa * st_;
-            const T wt = std::sqrt((T(1) - yt) * (T(1) + yt));
+            const T wt = rim_w(ct_);
             inner_ = inner_area<true>(theta_t_, st_, ct_, wt, T(1) / (T(1) + wt));
             // beyond theta_t (centre above the horizon only): the ellipse's own band,
             // a' b (x − sin x cos x) from its top, x = pi/2 − theta
@@ -269,16 +269,16 @@ public:
             width = T(2) * ap_ * c_th;
             xlo = x0_ - ap_ * c_th;
             const T hr = detail::max_of(ca_ * cg_ - sa_ * sg_ * c_th, T(0));  // the right rim point's height
-            yy = sa_ * s_th;
-            w = std::sqrt((T(1) - yy) * (T(1) + yy));
+            yy = rim_y(s_th);
+            w = rim_w(c_th);
             gap = hr * hr / (w + x0_ + ap_ * c_th);
             h = ca_ * cg_ + sa_ * sg_ * c_th;
         } else {
             const T target = f * half_;
             const T guess = first_guess(detail::min_of(target * inv_inner_, T(1))) * theta_t_;
             solve_inner(target, guess, s_th, c_th);
-            yy = sa_ * s_th;
-            w = std::sqrt((T(1) - yy) * (T(1) + yy));
+            yy = rim_y(s_th);
+            w = rim_w(c_th);
             width = inner_width(c_th, w);
             xlo = x0_ - ap_ * c_th;
             gap = T(0);
@@ -344,7 +344,7 @@ public:
             below = half_ - ap_ * sa_ * detail::angle_minus_sin_cos(half_pi_v<T> - th, cth, sth, T(1));
             width = T(2) * ap_ * cth;
         } else {
-            const T yy = sa_ * sth, w = std::sqrt((T(1) - yy) * (T(1) + yy));
+            const T yy = sa_ * sth, w = rim_w(cth);
             below = inner_area<false>(detail::min_of(th, theta_t_), sth, cth, w, T(1) / (T(1) + w));
             width = inner_width(cth, w);
         }
@@ -368,6 +368,20 @@ private:
     /// from the subnormals.
     static APSE_FUNC constexpr T normal_range() noexcept { return sizeof(T) == sizeof(float) ? T(0x1p25) : T(0x1p240); }
 
+    /// y = sin a sin theta for the polynomial sine `sth` of theta, at most 1: near theta = pi/2
+    /// that sine may exceed 1 by an ulp, and sin a rounds to 1 for a nearly hemispherical cap, so
+    /// that 1 − y^2 (the square of the width's bound w) would be negative.
+    APSE_FUNC T rim_y(T sth) const noexcept { return detail::min_of(sa_ * sth, T(1)); }
+
+    /// w = sqrt(1 − y^2) at y = sin a sin theta, from cos theta `cth`, as the sum of squares
+    /// sqrt(cos^2 a + sin^2 a cos^2 theta): no cancellation where 1 − y would lose its digits (sin a
+    /// and sin theta both near 1: a nearly hemispherical cap near its top, where w is small and
+    /// the samples' heights sqrt(w^2 − x^2) depend on it). At least cos a (to rounding).
+    APSE_FUNC T rim_w(T cth) const noexcept {
+        const T sc = sa_ * cth;
+        return std::sqrt(ca_ * ca_ + sc * sc);
+    }
+
     /// The Halley step (relative to the distance from theta to theta_t, where the region's width
     /// may vanish and with it H') below which the step is the last one, taken without evaluating
     /// its result: Halley's next error is then about the cube of this times that distance,
@@ -388,7 +402,7 @@ private:
             sth = sc.s;
             cth = sc.c;
             if (last) break;
-            const T yy = sa_ * sth, w = std::sqrt((T(1) - yy) * (T(1) + yy));
+            const T yy = rim_y(sth), w = rim_w(cth);
             // 1/w, 1/(1 + w) and 1/(w + x_lo) from one division (w >= cos a: no underflow)
             const T xlo = x0_ - ap_ * cth, h = ca_ * cg_ + sa_ * sg_ * cth;
             const bool by_height = xlo > T(0);  // the width as h^2/(w + x_lo) (inner_width)
