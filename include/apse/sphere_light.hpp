@@ -108,7 +108,7 @@ public:
     /// (steradians; 0 when empty), from the cap's stored 1 − cos alpha (no cancellation for far
     /// spheres).
     APSE_FUNC T solid_angle() const noexcept {
-        return ellipse().empty() ? T(0) : two_pi_v<T> * ellipse().one_minus_cos_alpha;
+        return ellipse().empty() ? T(0) : ellipse().cap_solid_angle();
     }
 
     /// The sampler (its own documentation says what its pdf is).

@@ -178,6 +178,16 @@ template <class T> struct SphericalEllipse {
     /// (tan_alpha == tan_beta), as project_sphere gives. The maps sample caps by closed forms.
     APSE_FUNC bool is_cap() const noexcept { return tan_beta == tan_alpha && !empty(); }
 
+    /// Solid angle of a cap (is_cap(); steradians): 2 pi (1 − cos alpha) from the stored
+    /// 1 − cos alpha (no cancellation, one product). For the smallest caps, whose 1 − cos alpha
+    /// is subnormal (tan alpha below ~1e-19 in float, ~1e-154 in double) and flushed to 0 where
+    /// denormals are (-ffast-math), (2 pi sin alpha) sin alpha / (1 + cos alpha) instead, which
+    /// stays normal. Not meaningful for other ellipses (solid_angle() is).
+    APSE_FUNC T cap_solid_angle() const noexcept {
+        if (one_minus_cos_alpha > T(0)) return two_pi_v<T> * one_minus_cos_alpha;
+        return (two_pi_v<T> * sin_alpha) * sin_alpha / (T(1) + cos_alpha);
+    }
+
     /// Solid angle (steradians) of the ellipse, docs/math.md §3, by the cancellation-free form
     /// Omega = (4/3) tan(alpha) tan(beta) R_J(0, 1 + tan^2 beta, 1 + tan^2 alpha, 1)
     ///       = (4/3) sin(alpha) cos(alpha) sin(beta) cos(beta) sqrt(P) R_J(0, cos^2 alpha, cos^2 beta, P),

@@ -42,21 +42,25 @@ void check_light(const glm::vec<3, T>& o, const glm::vec<3, T>& c, T r, const gl
         if (s.distance != T(0)) fail("no sample with a distance");
         return;
     }
-    const double eps = double(apse::epsilon<T>());
-    const glm::dvec3 w(s.direction), od(o), cd(c), p(s.point);
+    // the checks in long double: its range holds the squares of any double (1e-300 coordinates
+    // square to 1e-600), so lengths neither underflow nor overflow
+    using L = long double;
+    using LV = glm::vec<3, L>;
+    const L eps = L(apse::epsilon<T>());
+    const LV w(s.direction), od(o), cd(c), p(s.point);
     if (std::fabs(glm::length(w) - 1) > 64 * eps) fail("direction not unit");
     if (!(s.distance > T(0)) || !apse::detail::is_finite(s.distance) || !apse_fuzz::finite3(s.point))
         fail("bad point or distance");
     // every coordinate's scale: the rounding of o, c and the point is relative to it
-    const double scale = std::fmax(glm::length(od), glm::length(cd)) + double(r) + double(s.distance);
-    if (glm::length(p - (od + double(s.distance) * w)) > 64 * eps * scale) fail("point is not o + distance * direction");
+    const L scale = std::fmax(glm::length(od), glm::length(cd)) + L(r) + L(s.distance);
+    if (glm::length(p - (od + L(s.distance) * w)) > 64 * eps * scale) fail("point is not o + distance * direction");
     // on the sphere, up to the rounding of the direction (its angular error times the distance)
-    const double tol = 256 * eps * scale;
-    if (std::fabs(glm::length(p - cd) - double(r)) > tol) fail("point not on the sphere");
+    const L tol = 256 * eps * scale;
+    if (std::fabs(glm::length(p - cd) - L(r)) > tol) fail("point not on the sphere");
     if (glm::dot(p - cd, w) > tol) fail("point on the far side of the sphere");
     if (horizon) {
-        const glm::dvec3 n(*horizon);
-        const double nl = glm::length(n);
+        const LV n(*horizon);
+        const L nl = glm::length(n);
         if (nl > 0 && std::isfinite(nl) && glm::dot(n / nl, w) < -64 * eps) fail("cosine-weighted sample below the horizon");
     }
     const auto back = light.invert(s.direction);

@@ -70,7 +70,7 @@ public:
     /// Builds the map for `ellipse` (empty allowed: every sample then has pdf 0).
     APSE_FUNC explicit ParallelMap(const SphericalEllipse<T>& ellipse) noexcept
         : ellipse_(ellipse), areas_(detail::ParallelAreas<T>::make(ellipse)), beta_(ellipse.beta()) {
-        omega_ = areas_.cap ? two_pi_v<T> * ellipse.one_minus_cos_alpha : detail::solid_angle_of(ellipse);
+        omega_ = areas_.cap ? ellipse.cap_solid_angle() : detail::solid_angle_of(ellipse);
         valid_ = !ellipse.empty() && omega_ > T(0) && detail::is_finite(omega_);
         inv_omega_ = valid_ ? T(1) / omega_ : T(0);
         half_ = T(0.5) * omega_;

@@ -145,7 +145,7 @@ public:
     /// pdf 0).
     APSE_HOT_INLINE explicit RadialMap(const SphericalEllipse<T>& ellipse) noexcept
         : ellipse_(ellipse), areas_(detail::EllipseAreas<T>::make(ellipse)), cap_(ellipse.is_cap()) {
-        omega_ = cap_ ? two_pi_v<T> * ellipse.one_minus_cos_alpha : detail::solid_angle_of(ellipse);
+        omega_ = cap_ ? ellipse.cap_solid_angle() : detail::solid_angle_of(ellipse);
         valid_ = !ellipse.empty() && omega_ > T(0) && detail::is_finite(omega_);
         inv_omega_ = valid_ ? T(1) / omega_ : T(0);
         quarter_ = T(0.25) * omega_;

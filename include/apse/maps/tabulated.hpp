@@ -76,7 +76,8 @@ public:
                  table.ratio_nodes >= 2 && ellipse.tan_alpha > T(0);
         // a cap's azimuthal CDF is exactly linear: sample() draws it exactly, density 1/Omega
         cap_ = ellipse.is_cap();
-        cap_inv_omega_ = cap_ ? T(1) / (two_pi_v<T> * ellipse.one_minus_cos_alpha) : T(0);
+        cap_inv_omega_ = cap_ ? T(1) / ellipse.cap_solid_angle() : T(0);
+        if (cap_ && !(detail::is_finite(cap_inv_omega_) && cap_inv_omega_ > T(0))) valid_ = false;  // no finite density
         // kappa^2 = (1 + cos alpha)/(1 + cos beta) and its inverse, paired (1 for a cap); then
         // kappa and sqrt(cos alpha), paired
         T inv_kappa2 = T(1), sqrt_ca;
