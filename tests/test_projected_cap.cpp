@@ -536,6 +536,13 @@ TEMPLATE_TEST_CASE("projected cap: extreme normals (tiny, huge, subnormal compon
     if (sizeof(T) == sizeof(double)) {
         const auto cap = apse::project_sphere(o, Vec3<T>(T(-3), T(3), T(3)), T(3));
         run(cap, Vec3<T>(T(-1), T(0.99999904632568359), -L::max()));
+        // a disk of radius 3.6e10 seen from 6.7 away: a cap of angular radius pi/2 − 1.2e-10
+        // (sin a rounds to 1) whose centre is below the horizon of the normal (1, 1, 1); at
+        // u1 = 0 or 1 the polynomial sine of theta near pi/2 exceeded 1 by an ulp, and
+        // sqrt(1 − y^2) gave NaN directions
+        const T big = T(35686274509.803925);
+        run(apse::project_disk(o, Vec3<T>(T(3), T(-3), T(-2)), Vec3<T>(big, T(35277338962.928925), T(3.568627450980393e-9)), big),
+            Vec3<T>(big, big, big));
     }
     std::vector<apse::SphericalEllipse<T>> caps;
     for (int axis = 0; axis < 3; ++axis) {
