@@ -176,8 +176,7 @@ public:
             st_ = detail::min_of(st * inv_len, T(1));
             ct_ = detail::min_of(ct * inv_len, T(1));
             theta_t_ = detail::angle_of(st_, ct_);
-            const T yt = sa * st_;
-            const T wt = rim_w(ct_);
+            const T wt = rim_w(ct_);  // sqrt(1 − y_t^2)
             inner_ = inner_area<true>(theta_t_, st_, ct_, wt, T(1) / (T(1) + wt));
             // beyond theta_t (centre above the horizon only): the ellipse's own band,
             // a' b (x − sin x cos x) from its top, x = pi/2 − theta
@@ -344,7 +343,7 @@ public:
             below = half_ - ap_ * sa_ * detail::angle_minus_sin_cos(half_pi_v<T> - th, cth, sth, T(1));
             width = T(2) * ap_ * cth;
         } else {
-            const T yy = sa_ * sth, w = rim_w(cth);
+            const T w = rim_w(cth);
             below = inner_area<false>(detail::min_of(th, theta_t_), sth, cth, w, T(1) / (T(1) + w));
             width = inner_width(cth, w);
         }
