@@ -219,7 +219,11 @@ public:
     /// vector inside the cap and above the receiver's horizon, with its density
     /// max(0, n·ω) / Omega_perp in solid angle. NaN u or empty(): pdf 0 and the cap's centre.
     /// u2 = 1 where the visible range ends at the horizon: that horizon direction, pdf 0; a
-    /// direction that rounding puts on or below the horizon: pdf 0 (declined).
+    /// direction that rounding puts on or below the horizon: pdf 0 (declined). A direction that
+    /// rounding puts outside the cap (by the few ulps of its components: up to ~1e-3 of a 1e-8 sr
+    /// cap's radius in float) is moved towards the centre by as much, so that pdf() of every
+    /// direction returned with pdf > 0 is that pdf to rounding (declined if that fails, e.g. for
+    /// a cap narrower than the rounding of a direction).
     APSE_FUNC DirectionSample<T> sample(const vec2& u) const noexcept {
         bool ok = !empty_;
         const vec2 uc = detail::clamp_unit(u, ok);
@@ -241,7 +245,7 @@ public:
             const T z = qz + t;
             const T p = sa_ * dx - t * sg_, q = sa_ * dy, s = ca_ + t * cg_;
             const vec3 w = p * e1_ + q * e2_ + s * c_;
-            return {w, z > T(0) ? z * inv_area_ : T(0)};
+            return inside(w, z > T(0) ? z * inv_area_ : T(0));
         }
         const T v = T(2) * uc.x - T(1);
         const T side = v < T(0) ? T(-1) : T(1);
@@ -299,7 +303,7 @@ public:
         const T s = sg_ * x + cg_ * z;
         const vec3 dir = p * e1_ + q * e2_ + s * c_;
         const T pd = z * inv_area_;
-        return {dir, pd > T(0) && glm::dot(n_, dir) > T(0) ? pd : T(0)};
+        return inside(dir, pd > T(0) && glm::dot(n_, dir) > T(0) ? pd : T(0));
     }
 
     /// Density of sample() at the world-space direction `d` (any non-zero length), in solid
@@ -357,6 +361,23 @@ private:
     /// T, above the rounding of the area evaluated per step (a few eps; a tighter rule would only
     /// make the last steps chase rounding).
     static APSE_FUNC constexpr T tolerance() noexcept { return T(16) * epsilon<T>(); }
+
+    /// The sample (w, density pd) as sample() returns it: w as it is when pdf() places it inside
+    /// the cap (or pd is 0); otherwise moved towards the centre along the great circle in steps of
+    /// 4, 8, 16, 32 eps of T in angle (the rounding of w and of pdf()'s own test) until pdf() does, the
+    /// density then pdf()'s; still outside: pdf 0 (declined).
+    APSE_FUNC DirectionSample<T> inside(vec3 w, T pd) const noexcept {
+        if (!(pd > T(0)) || pdf(w) > T(0)) return {w, pd};
+        // w + k c turns w at the rim towards c by about k sin a: k = 4 eps / sin a for 4 eps
+        T k = detail::min_of(T(4) * epsilon<T>() / sa_, T(1));
+        for (int i = 0; i < 4; ++i, k = detail::min_of(T(2) * k, T(1))) {
+            const vec3 v = w + k * c_;
+            w = v / std::sqrt(glm::dot(v, v));
+            const T p = pdf(w);
+            if (p > T(0)) return {w, p};
+        }
+        return {w, T(0)};
+    }
 
     /// A magnitude whose square is far enough above the subnormals (2^-960 in double, 2^-100 in
     /// float) that a sum of squares of numbers up to it loses nothing to their underflow.
