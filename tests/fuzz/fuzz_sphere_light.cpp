@@ -55,15 +55,21 @@ void check_light(const glm::vec<3, T>& o, const glm::vec<3, T>& c, T r, const gl
     const L scale = std::fmax(glm::length(od), glm::length(cd)) + L(r) + L(s.distance);
     if (glm::length(p - (od + L(s.distance) * w)) > 64 * eps * scale) fail("point is not o + distance * direction");
     // on the sphere, up to the rounding of the direction (its angular error times the distance)
-    // and of the cap itself: |c − o| = D is known to ~2 eps D only, which moves the cap's rim
-    // (sin alpha = r/D) by d alpha = r dD / (D L), L = sqrt(D² − r²) the tangent length, and a
-    // direction that far outside the true rim reaches the tangent point with
-    // (p − c)·w = 2 r d alpha = 4 eps r² / L (measured 4.7e-10 for a shading point 3.6e-12 above
-    // a sphere of radius 2: L = 3.8e-6); twice that is allowed
-    const L dc = glm::length(cd - od), rl = L(r), tangent = std::sqrt((dc - rl) * (dc + rl));
-    const L tol = 256 * eps * scale + (tangent > 0 ? 8 * eps * rl * rl / tangent : L(0));
-    if (std::fabs(glm::length(p - cd) - L(r)) > tol) fail("point not on the sphere");
-    if (glm::dot(p - cd, w) > tol) fail("point on the far side of the sphere");
+    // and of the cap itself: the light computes |c − o| = D to within ~2 eps D (the rounding of
+    // c − o is relative to the difference, then a dot product and a square root), allowed as
+    // dD = 4 eps D. That moves the cap's rim (sin alpha = r/D) by d alpha = r dD / (D L), L the
+    // tangent length, and a direction that far outside the exact rim reaches the tangent point
+    // with (p − c)·w = 2 r d alpha = 8 eps r² / L (measured 4.7e-10 for a shading point 3.6e-12
+    // above a sphere of radius 2 in double, where 8 eps r² / L = 9.3e-10), with L taken at D − dD.
+    // A shading point within dD of the surface is on no side of it that its coordinates decide
+    // (the light may see a nearly hemispherical cap from what is, exactly, inside the sphere):
+    // there the side the point faces is not checked.
+    const L dc = glm::length(cd - od), rl = L(r), dd = 4 * eps * dc;
+    const bool side_known = dc - dd > rl;
+    const L tangent = side_known ? std::sqrt((dc - dd - rl) * (dc - dd + rl)) : L(0);
+    const L tol = 256 * eps * scale;
+    if (std::fabs(glm::length(p - cd) - rl) > tol) fail("point not on the sphere");
+    if (side_known && glm::dot(p - cd, w) > tol + 8 * eps * rl * rl / tangent) fail("point on the far side of the sphere");
     if (horizon) {
         const LV n(*horizon);
         const L nl = glm::length(n);
