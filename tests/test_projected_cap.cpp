@@ -410,11 +410,14 @@ TEMPLATE_TEST_CASE("projected cap: CosineWeighted<every map> on a cap is Project
                 CHECK(c.direction == b.direction);  // the ellipse constructors build the same sampler
                 CHECK(cw.pdf(a.direction) == ref.pdf(a.direction));
                 // the same formulas at two call sites: bit-identical, unless the compiler contracts
-                // a·b + c into FMAs differently at each (-ffp-contract=fast: a few ulps of the
-                // square's coordinates, in [0, 1])
+                // a·b + c into FMAs differently at each (-ffp-contract=fast): then a few ulps of the
+                // square's coordinates, in [0, 1], times the inverse's own conditioning, which the
+                // round trip measures (|ib − u|): near the end of a cut cap's strip, where the
+                // strip is thin, u2 = (x − x_lo)/(x_hi − x_lo) amplifies rounding (measured: a
+                // round-trip error of 222 eps at u1 = 0.9996, the two call sites 12.5 eps apart)
                 const Vec2<T> ia = cw.invert(a.direction), ib = ref.invert(a.direction);
-                CHECK(std::fabs(double(ia.x - ib.x)) <= 8 * eps<T>());
-                CHECK(std::fabs(double(ia.y - ib.y)) <= 8 * eps<T>());
+                CHECK(std::fabs(double(ia.x - ib.x)) <= 8 * eps<T>() + 2 * std::fabs(double(ib.x - u.x)));
+                CHECK(std::fabs(double(ia.y - ib.y)) <= 8 * eps<T>() + 2 * std::fabs(double(ib.y - u.y)));
             }
         });
     }
