@@ -195,6 +195,18 @@ template <template <class> class Map, const char* Name, bool Cut> struct SphereC
         return apse::CosineWeighted<Map<T>>(sphere_map<Map>(s, v), Cut ? s.cut : s.above);
     }
 };
+/// Map<T>::CapSampler built from project_sphere: what SphereLight<Map<T>> samples with (the
+/// map's samples on a cap, without its general-ellipse path), direction only.
+template <template <class> class Map, const char* Name> struct SphereCapSampler : SphereTag {
+    static constexpr const char* name = Name;
+    template <class T> static auto make(const SphereConfig<T>& s, const apse::TabulationView& v) {
+        using Cap = typename Map<T>::CapSampler;
+        if constexpr (std::is_constructible<Map<T>, const apse::SphericalEllipse<T>&, const apse::TabulationView&>::value)
+            return Cap(apse::project_sphere(s.o, s.c, s.r), v);
+        else
+            return Cap(apse::project_sphere(s.o, s.c, s.r));
+    }
+};
 /// SphereLight<Map<T>>: the direction, the point on the sphere and its distance.
 template <template <class> class Map, const char* Name> struct SphereLightOf : SphereTag {
     static constexpr const char* name = Name;
@@ -205,13 +217,37 @@ template <template <class> class Map, const char* Name> struct SphereLightOf : S
             return apse::SphereLight<Map<T>>(s.o, s.c, s.r);
     }
 };
+/// SphereLight<CosineWeighted<Map<T>>> for the receiver normal with the cap cut by the horizon
+/// (Cut) or above it.
+template <template <class> class Map, const char* Name, bool Cut> struct SphereLightCosine : SphereTag {
+    static constexpr const char* name = Name;
+    template <class T> static auto make(const SphereConfig<T>& s, const apse::TabulationView& v) {
+        using L = apse::SphereLight<apse::CosineWeighted<Map<T>>>;
+        const glm::vec<3, T>& n = Cut ? s.cut : s.above;
+        if constexpr (std::is_constructible<Map<T>, const apse::SphericalEllipse<T>&, const apse::TabulationView&>::value)
+            return L(s.o, s.c, s.r, v, n);
+        else
+            return L(s.o, s.c, s.r, n);
+    }
+};
 constexpr char sphere_radial[] = "sphere_radial";
 constexpr char sphere_ld_radial[] = "sphere_ld_radial";
 constexpr char sphere_parallel[] = "sphere_parallel";
 constexpr char sphere_tabulated[] = "sphere_tabulated";
 constexpr char sphere_tabulated_ld_radial[] = "sphere_tabulated_ld_radial";
+constexpr char sphere_cap_radial[] = "sphere_cap_radial";
+constexpr char sphere_cap_ld_radial[] = "sphere_cap_ld_radial";
+constexpr char sphere_cap_tabulated[] = "sphere_cap_tabulated";
+constexpr char sphere_cap_tabulated_ld_radial[] = "sphere_cap_tabulated_ld_radial";
+constexpr char sphere_light_radial[] = "sphere_light_radial";
 constexpr char sphere_light_ld_radial[] = "sphere_light_ld_radial";
+constexpr char sphere_light_parallel[] = "sphere_light_parallel";
+constexpr char sphere_light_tabulated[] = "sphere_light_tabulated";
 constexpr char sphere_light_tabulated_ld_radial[] = "sphere_light_tabulated_ld_radial";
+constexpr char sphere_light_cosine_ld_radial_above[] = "sphere_light_cosine_ld_radial_above";
+constexpr char sphere_light_cosine_ld_radial_cut[] = "sphere_light_cosine_ld_radial_cut";
+constexpr char sphere_light_cosine_tabulated_ld_radial_above[] = "sphere_light_cosine_tabulated_ld_radial_above";
+constexpr char sphere_light_cosine_tabulated_ld_radial_cut[] = "sphere_light_cosine_tabulated_ld_radial_cut";
 constexpr char sphere_cosine_ld_radial_above[] = "sphere_cosine_ld_radial_above";
 constexpr char sphere_cosine_ld_radial_cut[] = "sphere_cosine_ld_radial_cut";
 constexpr char sphere_cosine_tabulated_ld_radial_above[] = "sphere_cosine_tabulated_ld_radial_above";
@@ -329,8 +365,19 @@ int main(int argc, char** argv) {
     register_sampler<SphereMap<apse::ParallelMap, sphere_parallel>>();
     register_sampler<SphereMap<apse::TabulatedMap, sphere_tabulated>>();
     register_sampler<SphereMap<apse::TabulatedLdRadialMap, sphere_tabulated_ld_radial>>();
+    register_sampler<SphereCapSampler<apse::RadialMap, sphere_cap_radial>>();
+    register_sampler<SphereCapSampler<apse::LdRadialMap, sphere_cap_ld_radial>>();
+    register_sampler<SphereCapSampler<apse::TabulatedMap, sphere_cap_tabulated>>();
+    register_sampler<SphereCapSampler<apse::TabulatedLdRadialMap, sphere_cap_tabulated_ld_radial>>();
+    register_sampler<SphereLightOf<apse::RadialMap, sphere_light_radial>>();
     register_sampler<SphereLightOf<apse::LdRadialMap, sphere_light_ld_radial>>();
+    register_sampler<SphereLightOf<apse::ParallelMap, sphere_light_parallel>>();
+    register_sampler<SphereLightOf<apse::TabulatedMap, sphere_light_tabulated>>();
     register_sampler<SphereLightOf<apse::TabulatedLdRadialMap, sphere_light_tabulated_ld_radial>>();
+    register_sampler<SphereLightCosine<apse::LdRadialMap, sphere_light_cosine_ld_radial_above, false>>();
+    register_sampler<SphereLightCosine<apse::LdRadialMap, sphere_light_cosine_ld_radial_cut, true>>();
+    register_sampler<SphereLightCosine<apse::TabulatedLdRadialMap, sphere_light_cosine_tabulated_ld_radial_above, false>>();
+    register_sampler<SphereLightCosine<apse::TabulatedLdRadialMap, sphere_light_cosine_tabulated_ld_radial_cut, true>>();
     register_sampler<SphereCosine<apse::LdRadialMap, sphere_cosine_ld_radial_above, false>>();
     register_sampler<SphereCosine<apse::LdRadialMap, sphere_cosine_ld_radial_cut, true>>();
     register_sampler<SphereCosine<apse::TabulatedLdRadialMap, sphere_cosine_tabulated_ld_radial_above,

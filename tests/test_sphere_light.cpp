@@ -3,6 +3,7 @@
 // equal to the sampler's own density, an unbiased irradiance estimate against the closed form,
 // sizes, mixed scalar arguments and bad input.
 #include <apse/sphere_light.hpp>
+#include <apse/cosine_weighted.hpp>
 #include <apse/maps/ld_radial.hpp>
 #include <apse/maps/parallel.hpp>
 #include <apse/maps/radial.hpp>
@@ -16,16 +17,19 @@
 #include <cmath>
 #include <limits>
 #include <type_traits>
+#include <vector>
 
 namespace {
 template <class T> using Vec2 = glm::vec<2, T>;
 template <class T> using Vec3 = glm::vec<3, T>;
 
-// Passed to GPU kernels by value: plain data, holding the chosen sampler and the shadow-ray data
-// (shading point, centre, radius, 1/radius, distance) only.
+// Passed to GPU kernels by value: plain data, holding the chosen sampler's cap form and the
+// shadow-ray data (shading point, centre, radius, 1/radius, distance) only — smaller than the map.
 template <class T> constexpr bool sized_by_its_map() {
     using Map = apse::TabulatedLdRadialMap<T>;
-    return sizeof(apse::SphereLight<Map>) <= sizeof(Map) + 2 * sizeof(Vec3<T>) + 3 * sizeof(T) + alignof(Map);
+    using Cap = typename Map::CapSampler;
+    return sizeof(apse::SphereLight<Map>) <= sizeof(Cap) + 2 * sizeof(Vec3<T>) + 3 * sizeof(T) + alignof(Cap) &&
+           sizeof(Cap) < sizeof(Map);
 }
 static_assert(std::is_trivially_copyable<apse::SphereLight<apse::LdRadialMap<float>>>::value, "trivially copyable");
 static_assert(std::is_trivially_copyable<apse::SphereLight<apse::TabulatedLdRadialMap<double>>>::value,
@@ -135,6 +139,103 @@ template <class T, class... Maps> void check_every_map(int n) {
     for (const Sphere<T>& s : spheres<T>()) (check_points<Maps>(s.o, s.c, s.r, n, rng), ...);
 }
 }  // namespace
+
+// SphereLight<Sampler> holds Sampler::CapSampler, not Sampler: its samples, pdfs and inverts must
+// be the sampler's own, built from project_sphere's cap. The same steps run in both, so they are
+// equal bit for bit — except where the compiler may fuse multiply-adds differently at the two
+// call sites (-ffp-contract with FMA hardware, -ffast-math: __FP_FAST_FMA / __FAST_MATH__), one
+// rounding per fused operation: there within 16 eps (relative; the cut-cap inversion's stopping
+// rule is 16 eps of its area), and the inverse compared away from the square's seams.
+#if defined(__FP_FAST_FMA) || defined(__FAST_MATH__)
+constexpr bool exact_equality = false;
+#else
+constexpr bool exact_equality = true;
+#endif
+
+template <class T> bool same(T a, T b) {
+    if (exact_equality) return a == b || (std::isnan(double(a)) && std::isnan(double(b)));
+    return std::fabs(double(a) - double(b)) <= 16 * double(apse::epsilon<T>()) * std::fmax(1.0, std::fmax(std::fabs(double(a)), std::fabs(double(b))));
+}
+template <class T> bool same(const Vec3<T>& a, const Vec3<T>& b) { return same(a.x, b.x) && same(a.y, b.y) && same(a.z, b.z); }
+template <class T> bool same(const Vec2<T>& a, const Vec2<T>& b) { return same(a.x, b.x) && same(a.y, b.y); }
+
+/// The same density at d, or — where the two call sites may round differently — one of them 0
+/// and d on the cap's rim to rounding (the cone test then falls either way: SphericalEllipse::
+/// contains): the direction's components carry ~eps absolute error, its offset from the axis is
+/// ~tan alpha, so its gnomonic radius (1 on the rim) is known to ~eps (1 + 1/tan alpha).
+template <class T> bool same_pdf(T a, T b, const apse::SphericalEllipse<T>& cap, const Vec3<T>& d) {
+    if (same(a, b)) return true;
+    if (exact_equality || (a > T(0) && b > T(0))) return false;
+    const glm::dvec3 l(cap.to_local(d));
+    const double rho = std::sqrt(l.x * l.x + l.y * l.y) / (l.z * double(cap.tan_alpha));
+    return std::fabs(rho - 1) <= 16 * double(apse::epsilon<T>()) * (1 + 1 / double(cap.tan_alpha));
+}
+
+/// The light against Sampler(project_sphere(o, c, r), args...) at the points `us` and
+/// directions `ws`.
+template <class Sampler, class T, class... A>
+void check_same_as_sampler(const Vec3<T>& o, const Vec3<T>& c, T r, const std::vector<Vec2<T>>& us,
+                           const std::vector<Vec3<T>>& ws, const A&... args) {
+    const apse::SphereLight<Sampler> light(o, c, r, args...);
+    const Sampler ref(apse::project_sphere(o, c, r), args...);
+    REQUIRE(light.empty() == ref.empty());
+    for (const Vec2<T>& u : us) {
+        const auto a = light.sample(u);
+        const auto b = ref.sample(u);
+        INFO("u = (" << u.x << ", " << u.y << ")");
+        CHECK(same(a.pdf, b.pdf));
+        CHECK(same(a.direction, b.direction));
+        CHECK(same_pdf(light.pdf(b.direction), ref.pdf(b.direction), ref.ellipse(), b.direction));
+        const bool off_seam = u.x > T(0.05) && u.x < T(0.95) && u.y > T(0.05) && u.y < T(0.95);
+        if (exact_equality || off_seam) CHECK(same(light.invert(b.direction), ref.invert(b.direction)));
+    }
+    for (const Vec3<T>& w : ws) {
+        CHECK(same_pdf(light.pdf(w), ref.pdf(w), ref.ellipse(), w));
+        CHECK(same(apse::sphere_light_pdf<Sampler>(o, c, r, w, args...), ref.ellipse().contains(w) ? ref.pdf(w) : T(0)));
+        if (exact_equality) CHECK(same(light.invert(w), ref.invert(w)));
+    }
+}
+
+TEMPLATE_TEST_CASE("sphere light: the samples, pdfs and inverts of its sampler built from project_sphere",
+                   "[sphere_light]", float, double) {
+    using T = TestType;
+    apse_test::Rng rng(20261204);
+    const apse::TabulationView table = apse_test::default_table().view(), no_table{nullptr, 0, 0, 0};
+    auto unit = [&] {
+        const T z = T(2) * rng.uniform<T>() - T(1), phi = T(6.283185307179586) * rng.uniform<T>();
+        const T s = std::sqrt(std::fmax(T(0), T(1) - z * z));
+        return Vec3<T>(s * std::cos(phi), s * std::sin(phi), z);
+    };
+    std::vector<Vec2<T>> us = {Vec2<T>(T(0)), Vec2<T>(T(1)), Vec2<T>(T(0.5)), Vec2<T>(T(0), T(1)),
+                               Vec2<T>(std::numeric_limits<T>::quiet_NaN(), T(0.5))};
+    for (int i = 0; i < 12; ++i) us.push_back(Vec2<T>(rng.uniform<T>(), rng.uniform<T>()));
+    for (int k = 0; k < 160; ++k) {
+        const Vec3<T> c(T(4) * rng.uniform<T>() - T(2), T(4) * rng.uniform<T>() - T(2), T(4) * rng.uniform<T>() - T(2));
+        const T r = std::pow(T(10), T(-3) * rng.uniform<T>());
+        // 1 + 2^-20 to 1e4 radii from the centre (log-uniform), and a few exactly-rounded surfaces
+        const T ratio = k % 16 == 0 ? T(1) + std::ldexp(T(1), -int(8 + k % 13)) : std::pow(T(1e4), rng.uniform<T>()) + T(1e-6);
+        const Vec3<T> o = c + unit() * (r * ratio);
+        // receiver normals: random (caps above, cut by and below the horizon), zero, NaN
+        const Vec3<T> n = k % 20 == 1 ? Vec3<T>(T(0)) : k % 20 == 2 ? Vec3<T>(std::numeric_limits<T>::quiet_NaN()) : unit();
+        std::vector<Vec3<T>> ws = {glm::normalize(c - o), Vec3<T>(T(0)), -glm::normalize(c - o)};
+        for (int j = 0; j < 6; ++j) ws.push_back(glm::normalize(c - o) + unit() * (r / glm::length(c - o)));
+        INFO("sphere " << k << ": c = (" << c.x << ", " << c.y << ", " << c.z << "), r = " << r << ", ratio = " << ratio);
+        check_same_as_sampler<apse::RadialMap<T>>(o, c, r, us, ws);
+        check_same_as_sampler<apse::LdRadialMap<T>>(o, c, r, us, ws);
+        check_same_as_sampler<apse::ParallelMap<T>>(o, c, r, us, ws);
+        check_same_as_sampler<apse::TabulatedMap<T>>(o, c, r, us, ws, table);
+        check_same_as_sampler<apse::TabulatedLdRadialMap<T>>(o, c, r, us, ws, k % 10 == 3 ? no_table : table);
+        check_same_as_sampler<apse::CosineWeighted<apse::RadialMap<T>>>(o, c, r, us, ws, n);
+        check_same_as_sampler<apse::CosineWeighted<apse::LdRadialMap<T>>>(o, c, r, us, ws, n);
+        check_same_as_sampler<apse::CosineWeighted<apse::ParallelMap<T>>>(o, c, r, us, ws, n);
+        check_same_as_sampler<apse::CosineWeighted<apse::TabulatedLdRadialMap<T>>>(o, c, r, us, ws,
+                                                                                   k % 10 == 3 ? no_table : table, n);
+        const apse::SphereLight<apse::CosineWeighted<apse::LdRadialMap<T>>> light(o, c, r, n);
+        const apse::CosineWeighted<apse::LdRadialMap<T>> ref(apse::project_sphere(o, c, r), n);
+        CHECK(light.cosine_weighted() == ref.weighted());
+        CHECK_FALSE(apse::SphereLight<apse::LdRadialMap<T>>(o, c, r).cosine_weighted());
+    }
+}
 
 TEMPLATE_TEST_CASE("sphere light: points on the sphere, distances, pdf and the stateless pdf", "[sphere_light]", float,
                    double) {

@@ -46,8 +46,11 @@
 /// weigh inlining by size and otherwise keep the tabulated maps' sample step out of line, a call
 /// per sample; measured ~20 % of the step's instructions), and the short per-shading-point set-ups
 /// of a spherical cap (project_sphere, the radial maps' constructors: out of line, the ellipse is
-/// stored and reloaded through memory, ~15 % of a cap's set-up and sample, measured). Plain
-/// `APSE_FUNC` elsewhere.
+/// stored and reloaded through memory, ~15 % of a cap's set-up and sample, measured), with the
+/// steps of a cap's sample (the folds, the polar step, the frame, SphereLight's hit distance):
+/// in a large translation unit GCC's inlining budget runs out and leaves them as calls, ~30 %
+/// of a sphere light's set-up and sample (bench_samplers, measured). Plain `APSE_FUNC`
+/// elsewhere.
 #if !defined(__CUDACC__) && (defined(__GNUC__) || defined(__clang__))
 #define APSE_HOT_INLINE __attribute__((always_inline)) inline
 #else

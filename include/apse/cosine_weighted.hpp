@@ -80,6 +80,110 @@ template <class T> struct CosineTraits<ParallelMap<T>> : PlainCosineTraits<Paral
     static APSE_FUNC bool valid(const ParallelMap<T>& b) noexcept { return b.solid_angle() > T(0); }
 };
 
+/// CosineWeighted<Map> on a spherical cap, holding only what it uses there (`Plain` is
+/// Map::CapSampler): ProjectedCapSampler for a usable receiver normal, the map's cap sampler for
+/// a zero, NaN or infinite one (plain samples), empty when the map cannot sample or the cap is
+/// entirely below the horizon — the same samples, pdf and invert as CosineWeighted<Map> built
+/// from the cap, without building the map when the normal is usable. Built from a cap
+/// (project_sphere's result); any other ellipse gives an empty sampler. Trivially copyable.
+template <class Plain> class CapCosine {
+public:
+    using vec2 = typename Plain::vec2;       ///< a point of the unit square
+    using vec3 = typename Plain::vec3;       ///< a 3-D vector (direction, point or normal)
+    using T = typename vec3::value_type;     ///< float or double
+
+    /// The sampler of `cap` for the receiver normal `normal` (the exact maps and ParallelMap).
+    template <class P = Plain, std::enable_if_t<std::is_constructible<P, const SphericalEllipse<T>&>::value, int> = 0>
+    APSE_HOT_INLINE CapCosine(const SphericalEllipse<T>& cap, const vec3& normal) noexcept {
+        init(cap, nullptr, normal);
+    }
+
+    /// The same for the tabulated maps, with the table their map would be given.
+    template <class P = Plain,
+              std::enable_if_t<std::is_constructible<P, const SphericalEllipse<T>&, const TabulationView&>::value, int> = 0>
+    APSE_HOT_INLINE CapCosine(const SphericalEllipse<T>& cap, const TabulationView& table, const vec3& normal) noexcept {
+        init(cap, &table, normal);
+    }
+
+    /// True if the sampler cannot sample: every sample and pdf is then 0.
+    APSE_FUNC bool empty() const noexcept { return mode_ == Mode::empty; }
+
+    /// True if the samples are cosine-weighted (ProjectedCapSampler's).
+    APSE_FUNC bool weighted() const noexcept { return mode_ == Mode::cap; }
+
+    /// The cap sampled.
+    APSE_FUNC const SphericalEllipse<T>& ellipse() const noexcept {
+        return mode_ == Mode::cap ? u_.cap.ellipse() : u_.plain.ellipse();
+    }
+
+    /// CosineWeighted::sample.
+    APSE_HOT_INLINE DirectionSample<T> sample(const vec2& u) const noexcept {
+        if (mode_ == Mode::cap) return u_.cap.sample(u);
+        if (mode_ == Mode::plain) return u_.plain.sample(u);
+        return {u_.plain.ellipse().z, T(0)};
+    }
+
+    /// CosineWeighted::pdf.
+    APSE_FUNC T pdf(const vec3& d) const noexcept {
+        if (mode_ == Mode::cap) return u_.cap.pdf(d);
+        if (mode_ == Mode::empty) return T(0);
+        const T p = u_.plain.pdf(d);
+        return p > T(0) ? p : T(0);
+    }
+
+    /// CosineWeighted::invert.
+    APSE_FUNC vec2 invert(const vec3& d) const noexcept {
+        if (mode_ == Mode::plain) return u_.plain.invert(d);
+        if (mode_ == Mode::empty) return vec2(T(0));
+        bool ok = true;
+        (void)normalize_direction(u_.cap.ellipse().to_local(d), ok);
+        return ok ? u_.cap.invert(d) : vec2(T(0));
+    }
+
+private:
+    /// The modes of CosineWeighted that a cap reaches.
+    enum class Mode : int { empty, plain, cap };
+
+    /// CosineWeighted's choice on a cap: `table` is null for the maps built without one.
+    APSE_HOT_INLINE void init(const SphericalEllipse<T>& cap, const TabulationView* table, const vec3& normal) noexcept {
+        mode_ = Mode::empty;
+        const T scale = max_abs3(normal);
+        const bool normal_ok = scale > T(0) && is_finite(scale) && finite3(normal);
+        if (normal_ok && plain_can_sample(cap, table)) {
+            new (&u_.cap) ProjectedCapSampler<T>(cap, normal);  // built in place: no copy
+            if (!u_.cap.empty()) mode_ = Mode::cap;
+            if (mode_ == Mode::cap) return;
+        }
+        if constexpr (std::is_constructible<Plain, const SphericalEllipse<T>&, const TabulationView&>::value) {
+            new (&u_.plain) Plain(cap, *table);
+        } else {
+            new (&u_.plain) Plain(cap);
+        }
+        if (!normal_ok && !u_.plain.empty()) mode_ = Mode::plain;
+    }
+
+    /// Whether the map (Plain) can sample `cap`, without building it: a cap with a finite,
+    /// positive solid angle whose reciprocal is finite, and, for the tabulated maps, a valid
+    /// table (the maps' own conditions on a cap).
+    static APSE_FUNC bool plain_can_sample(const SphericalEllipse<T>& cap, const TabulationView* table) noexcept {
+        if (table && !(table->cdf != nullptr && table->bins >= 1 && table->alpha_nodes >= 2 && table->ratio_nodes >= 2))
+            return false;
+        if (!cap.is_cap()) return false;
+        const T omega = cap.cap_solid_angle();
+        return omega > T(0) && is_finite(omega) && is_finite(T(1) / omega);
+    }
+
+    Mode mode_;
+    /// The sampler in use (mode_): the cap sampler, or the map's (also for an empty sampler, for
+    /// its ellipse). A union: building one writes only the member it uses.
+    union Samplers {
+        APSE_FUNC Samplers() noexcept : none() {}
+        char none;
+        Plain plain;
+        ProjectedCapSampler<T> cap;
+    } u_;
+};
+
 /// The member CosineWeighted holds in place of TabulatedCosineWarp for the exact maps.
 struct NoCosineWarp {};
 
@@ -110,6 +214,9 @@ public:
     using T = typename Map::vec3::value_type;  ///< float or double
     using vec2 = glm::vec<2, T>;  ///< a point of the unit square
     using vec3 = glm::vec<3, T>;  ///< a 3-D vector (direction, point or normal)
+    /// What SphereLight holds for CosineWeighted<Map>: the same samples on a cap (a sphere's
+    /// ellipse is always one), holding only the map's cap sampler or ProjectedCapSampler.
+    using CapSampler = detail::CapCosine<typename Map::CapSampler>;
 
     /// Builds the sampler for the light `map` (any of the five maps, already built for the
     /// shading point) and the receiver's normal `normal` (world space, any non-zero finite length;

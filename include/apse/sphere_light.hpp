@@ -47,7 +47,7 @@ namespace detail {
 /// directions that rounding puts just outside the cap (the tangent point). Returns 0 when w
 /// points away from the sphere (b <= 0) or the result is not finite.
 template <class T>
-APSE_FUNC T sphere_hit_distance(const glm::vec<3, T>& p, T r, T inv_r, T dist, const glm::vec<3, T>& w) noexcept {
+APSE_HOT_INLINE T sphere_hit_distance(const glm::vec<3, T>& p, T r, T inv_r, T dist, const glm::vec<3, T>& w) noexcept {
     const T b = glm::dot(w, p);
     if (!(b > T(0))) return T(0);
     const glm::vec<3, T> q = (p - b * w) * inv_r;
@@ -57,24 +57,34 @@ APSE_FUNC T sphere_hit_distance(const glm::vec<3, T>& p, T r, T inv_r, T dist, c
     return t > T(0) && is_finite(t) ? t : T(0);
 }
 
-/// |v| without overflow or underflow of the squares (v scaled by its largest component); 0 for
-/// a zero vector, NaN for a NaN one.
-template <class T> APSE_FUNC T robust_length(const glm::vec<3, T>& v) noexcept {
+/// |v| without overflow or underflow of the squares: sqrt(v·v) where the largest component is
+/// within [safe_scale_min, safe_scale_max] (the squares then keep their digits), v scaled by its
+/// largest component elsewhere; 0 for a zero vector, NaN for a NaN one.
+template <class T> APSE_HOT_INLINE T robust_length(const glm::vec<3, T>& v) noexcept {
     const T m = max_abs3(v);
+    if (m >= safe_scale_min<T>() && m <= safe_scale_max<T>()) return std::sqrt(glm::dot(v, v));
     if (!(m > T(0))) return m;
     const glm::vec<3, T> s = v * (T(1) / m);
     return m * std::sqrt(glm::dot(s, s));
 }
+
+/// Whether a sphere light's sampler draws cosine-weighted samples: CosineWeighted's cap sampler
+/// (detail::CapCosine) says so through weighted(); the maps, which have no such member, never do.
+template <class Sampler>
+APSE_FUNC auto weighted_of(const Sampler& s, int) noexcept -> decltype(bool(s.weighted())) { return s.weighted(); }
+template <class Sampler> APSE_FUNC bool weighted_of(const Sampler&, long) noexcept { return false; }
 
 }  // namespace detail
 
 /// A sphere light (centre, radius) seen from one shading point o, ready to sample with
 /// `Sampler`: any map (RadialMap, LdRadialMap, ParallelMap, TabulatedMap, TabulatedLdRadialMap
 /// of T) or CosineWeighted over one. The set-up — project_sphere and the sampler's own set-up —
-/// is done once in the constructor; sample() as often as needed. Holds the shading point, the
-/// centre, the radius and the sampler only (no size paid for samplers not used); trivially
-/// copyable when the sampler is (the tabulated maps hold a pointer into their table, which must
-/// outlive the light).
+/// is done once in the constructor; sample() as often as needed. The samples, pdf and invert
+/// are exactly (bit for bit) those of Sampler built from project_sphere's cap, but the light
+/// holds `Sampler::CapSampler`, what the sampler does on a cap and nothing else: the radial
+/// maps' closed forms without their general-ellipse paths and tables (maps/cap.hpp), the
+/// cosine-weighted ones as ProjectedCapSampler alone; ParallelMap as it is. Holds the shading
+/// point, the centre, the radius, two distances and that sampler only; trivially copyable.
 ///
 /// Defined behaviour on every input: a shading point inside or on the sphere (which sees the
 /// emitter in every direction, not a cap), a zero, negative or NaN radius, NaN or infinite
@@ -90,11 +100,14 @@ public:
     /// cap and `sampler_args`: nothing for the exact maps; the TabulationView for the tabulated
     /// maps; the receiver normal (after the table, for the tabulated maps) for CosineWeighted.
     template <class... SamplerArgs>
-    APSE_FUNC SphereLight(const vec3& o, const vec3& center, detail::type_identity_t<T> radius,
+    APSE_HOT_INLINE SphereLight(const vec3& o, const vec3& center, detail::type_identity_t<T> radius,
                           const SamplerArgs&... sampler_args) noexcept
         : o_(o), center_(center), radius_(radius), inv_radius_(T(1) / radius),
           dist_(detail::robust_length(center - o)),
           sampler_(project_sphere(o, center, radius), sampler_args...) {}
+
+    /// The sampler's type: what `Sampler` does on a cap (the class comment).
+    using CapSampler = typename Sampler::CapSampler;
 
     /// True if the light cannot be sampled (o inside or on the sphere, invalid input;
     /// cosine-weighted: also the cap entirely below the receiver's horizon): every sample and
@@ -111,14 +124,16 @@ public:
         return ellipse().empty() ? T(0) : ellipse().cap_solid_angle();
     }
 
-    /// The sampler (its own documentation says what its pdf is).
-    APSE_FUNC const Sampler& sampler() const noexcept { return sampler_; }
+    /// True if the samples are cosine-weighted (Sampler is CosineWeighted, the receiver normal is
+    /// usable and the cap not below its horizon): density exactly max(0, n·ω) / Omega_perp.
+    /// False for the maps' uniform samples.
+    APSE_FUNC bool cosine_weighted() const noexcept { return detail::weighted_of(sampler_, 0); }
 
     /// Sample for the point u of the unit square (clamped into [0, 1]^2; NaN → pdf 0): the
     /// direction, the nearest point of the sphere along it (detail::sphere_hit_distance), its
     /// distance and the sampler's pdf (solid angle). pdf 0 ("no sample", point o, distance 0,
     /// the direction finite) for an empty light, a NaN u, or a hit point that overflows T.
-    APSE_FUNC PointSample<T> sample(const vec2& u) const noexcept {
+    APSE_HOT_INLINE PointSample<T> sample(const vec2& u) const noexcept {
         const DirectionSample<T> s = sampler_.sample(u);
         PointSample<T> r{{s.direction, T(0)}, o_, T(0)};
         if (!(s.pdf > T(0))) return r;
@@ -143,7 +158,7 @@ private:
     T radius_;
     T inv_radius_;  ///< 1 / radius, for the hit distance
     T dist_;        ///< |center − o|, for the hit distance
-    Sampler sampler_;
+    CapSampler sampler_;
 };
 
 /// Density in solid angle with which SphereLight<Sampler>(o, center, radius, sampler_args...)
@@ -161,7 +176,7 @@ sphere_light_pdf(const typename Sampler::vec3& o, const typename Sampler::vec3& 
     using T = typename Sampler::vec3::value_type;
     const SphericalEllipse<T> cap = project_sphere(o, center, radius);
     if (!cap.contains(w)) return T(0);
-    return Sampler(cap, sampler_args...).pdf(w);
+    return typename Sampler::CapSampler(cap, sampler_args...).pdf(w);
 }
 
 }  // namespace apse

@@ -176,14 +176,14 @@ template <class T> struct SphericalEllipse {
 
     /// True for a spherical cap: a non-empty ellipse whose two semi-axes are exactly equal
     /// (tan_alpha == tan_beta), as project_sphere gives. The maps sample caps by closed forms.
-    APSE_FUNC bool is_cap() const noexcept { return tan_beta == tan_alpha && !empty(); }
+    APSE_HOT_INLINE bool is_cap() const noexcept { return tan_beta == tan_alpha && !empty(); }
 
     /// Solid angle of a cap (is_cap(); steradians): 2 pi (1 − cos alpha) from the stored
     /// 1 − cos alpha (no cancellation, one product). For the smallest caps, whose 1 − cos alpha
     /// is subnormal (tan alpha below ~1e-19 in float, ~1e-154 in double) and flushed to 0 where
     /// denormals are (-ffast-math), (2 pi sin alpha) sin alpha / (1 + cos alpha) instead, which
     /// stays normal. Not meaningful for other ellipses (solid_angle() is).
-    APSE_FUNC T cap_solid_angle() const noexcept {
+    APSE_HOT_INLINE T cap_solid_angle() const noexcept {
         if (one_minus_cos_alpha > T(0)) return two_pi_v<T> * one_minus_cos_alpha;
         return (two_pi_v<T> * sin_alpha) * sin_alpha / (T(1) + cos_alpha);
     }
@@ -211,7 +211,7 @@ template <class T> struct SphericalEllipse {
     }
 
     /// Ellipse frame → world: local.x x + local.y y + local.z z.
-    APSE_FUNC vec3 to_world(const vec3& local) const noexcept {
+    APSE_HOT_INLINE vec3 to_world(const vec3& local) const noexcept {
         return local.x * x + local.y * y + local.z * z;
     }
 

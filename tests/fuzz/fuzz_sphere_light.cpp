@@ -87,7 +87,7 @@ void check_map(const glm::vec<3, T>& o, const glm::vec<3, T>& c, T r, const glm:
                const glm::vec<2, T>& u, const Args&... args) {
     if (g_cosine) {
         const apse::SphereLight<apse::CosineWeighted<Map>> light(o, c, r, args..., n);
-        check_light<T, apse::CosineWeighted<Map>>(o, c, r, u, light.sampler().weighted() ? &n : nullptr, args..., n);
+        check_light<T, apse::CosineWeighted<Map>>(o, c, r, u, light.cosine_weighted() ? &n : nullptr, args..., n);
     } else {
         check_light<T, Map>(o, c, r, u, nullptr, args...);
     }

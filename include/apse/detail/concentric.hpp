@@ -67,7 +67,7 @@ template <class T> struct ConcentricFold {
 /// 1/2 + (|B| − |A|)/(2M). The same point as fold_quadrant(concentric_to_disk(u).turns) up to
 /// rounding (an absolute error of about one ulp of 1/2 in the fraction). u in [0, 1]^2, not
 /// checked (the caller clamps: clamp_unit); the square's centre → radius 0.
-template <class T> APSE_FUNC ConcentricFold<T> concentric_fold(const glm::vec<2, T>& u) noexcept {
+template <class T> APSE_HOT_INLINE ConcentricFold<T> concentric_fold(const glm::vec<2, T>& u) noexcept {
     const T a = T(2) * u.x - T(1);
     const T b = T(2) * u.y - T(1);
     const T fa = std::fabs(a), fb = std::fabs(b);

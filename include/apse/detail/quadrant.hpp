@@ -28,14 +28,14 @@ namespace apse {
 namespace detail {
 
 /// x clamped to [0, 1]; `ok` is cleared when x is NaN (the caller then reports "no sample").
-template <class T> APSE_FUNC T clamp_unit(T x, bool& ok) noexcept {
+template <class T> APSE_HOT_INLINE T clamp_unit(T x, bool& ok) noexcept {
     const bool nan = is_nan(x);
     if (nan) ok = false;
     return nan ? T(0) : clamp_non_nan(x, T(0), T(1));
 }
 
 /// The point u of the square with both coordinates through clamp_unit (x first, then y).
-template <class T> APSE_FUNC glm::vec<2, T> clamp_unit(const glm::vec<2, T>& u, bool& ok) noexcept {
+template <class T> APSE_HOT_INLINE glm::vec<2, T> clamp_unit(const glm::vec<2, T>& u, bool& ok) noexcept {
     const T x = clamp_unit(u.x, ok);
     const T y = clamp_unit(u.y, ok);
     return glm::vec<2, T>(x, y);
@@ -67,7 +67,7 @@ template <class T> struct QuadrantFold {
 /// y < 0 in the lower half (u1 > 1/2) and x < 0 in the middle quadrants (|4 u1 − 2| < 1). On the
 /// quadrants' boundaries (u1 = 1/4, 1/2, 3/4) the point is on an axis, where the sign that
 /// differs from q's multiplies zero.
-template <class T> APSE_FUNC QuadrantFold<T> fold_quadrant(T u1) noexcept {
+template <class T> APSE_HOT_INLINE QuadrantFold<T> fold_quadrant(T u1) noexcept {
     const T g = std::fabs(T(4) * clamp(u1, T(0), T(1)) - T(2));  // distance from the −x axis, [0, 2]
     const T f = T(1) - std::fabs(T(1) - g);
     return {std::copysign(T(1), g - T(1)), std::copysign(T(1), T(0.5) - u1), clamp_non_nan(f, T(0), T(1))};
@@ -89,7 +89,7 @@ template <class T> APSE_FUNC T unfold_quadrant(const QuadrantFold<T>& fold) noex
 /// Maps a first-quadrant local (x >= 0, y >= 0) onto the quadrant of `fold` by the reflections
 /// (x, y) → (±x, ±y): (sign_x x, sign_y y, z). Exact (and free of branches).
 template <class T>
-APSE_FUNC glm::vec<3, T> place_in_quadrant(const QuadrantFold<T>& fold, T x, T y, T z) noexcept {
+APSE_HOT_INLINE glm::vec<3, T> place_in_quadrant(const QuadrantFold<T>& fold, T x, T y, T z) noexcept {
     return glm::vec<3, T>(fold.sign_x * x, fold.sign_y * y, z);
 }
 

@@ -26,6 +26,7 @@
 #include "../detail/glm.hpp"
 #include "../detail/map_access.hpp"
 #include "../detail/quadrant.hpp"
+#include "cap.hpp"
 #include "radial.hpp"
 
 namespace apse {
@@ -71,6 +72,9 @@ template <class T> class LdRadialMap {
 public:
     using vec2 = glm::vec<2, T>;  ///< a point of the unit square
     using vec3 = glm::vec<3, T>;  ///< a 3-D vector (direction, point or normal)
+    /// What SphereLight holds for this map: the same samples on a cap, without the
+    /// general-ellipse path (maps/cap.hpp).
+    using CapSampler = detail::CapMap<T, true, false>;
 
     /// Builds the map for `ellipse` (empty allowed: every sample then has pdf 0).
     APSE_HOT_INLINE explicit LdRadialMap(const SphericalEllipse<T>& ellipse) noexcept : radial_(ellipse) {}

@@ -66,6 +66,9 @@ template <class T> class ParallelMap {
 public:
     using vec2 = glm::vec<2, T>;  ///< a point of the unit square
     using vec3 = glm::vec<3, T>;  ///< a 3-D vector (direction, point or normal)
+    /// What SphereLight holds for this map: the map itself (on a cap its cumulative area has no
+    /// closed-form inverse: it keeps its bracketed steps).
+    using CapSampler = ParallelMap;
 
     /// Builds the map for `ellipse` (empty allowed: every sample then has pdf 0).
     APSE_FUNC explicit ParallelMap(const SphericalEllipse<T>& ellipse) noexcept

@@ -25,6 +25,7 @@
 #include "../detail/map_access.hpp"
 #include "../detail/polynomial_trig.hpp"
 #include "../detail/quadrant.hpp"
+#include "cap.hpp"
 #include "cumulative_area.hpp"
 
 namespace apse {
@@ -85,38 +86,6 @@ APSE_FUNC RadialFraction<T> radial_fraction(const EllipseAxes<T>& k, T x, T y, T
     return {one_minus_z, one_minus_c};
 }
 
-/// cos theta and sin theta at the radial solid-angle fraction u2 in [0, 1] of a spherical cap
-/// with 1 − cos alpha = omc (docs/math.md §4, Caps): 1 − cos theta = v = u2 omc and
-/// sin theta = sqrt(v (2 − v)), both without cancellation (near the centre and near the horizon).
-/// The polar step of every radial map on a cap (RadialMap, TabulatedMap and their LD forms).
-template <class T> APSE_FUNC SinCosValues<T> cap_polar(T omc, T u2) noexcept {
-    const T v = u2 * omc;
-    return {std::sqrt(v * (T(2) - v)), T(1) - v};
-}
-
-/// The local direction of a cap (1 − cos alpha = omc) for the quadrant and quarter-turn fraction
-/// `fold` and the radial fraction u2 in [0, 1]: azimuth phi = fraction pi/2 reflected into the
-/// quadrant (a cap's cumulative area is linear in the azimuth, so this is the point the general
-/// radial map gives), polar angle by cap_polar. No inversion, no table.
-template <class T>
-APSE_FUNC glm::vec<3, T> cap_direction(const QuadrantFold<T>& fold, T omc, T u2) noexcept {
-    const SinCosValues<T> az = sin_cos_quarter_turn(fold.fraction);
-    const SinCosValues<T> p = cap_polar(omc, u2);
-    return place_in_quadrant(fold, p.s * az.c, p.s * az.s, p.c);
-}
-
-/// Inverse of cap_direction for the unit local direction `l`: u1 from the azimuth
-/// (atan2(|y|, |x|) 2/pi, unfolded from its quadrant), u2 = (1 − cos theta)/omc with
-/// 1 − cos theta = (x^2 + y^2)/(1 + z); clamped to [0, 1]^2 (a direction outside the cap, or
-/// below its horizon, gives u2 = 1: the rim point at its azimuth).
-template <class T> APSE_FUNC glm::vec<2, T> cap_coordinates(const glm::vec<3, T>& l, T omc) noexcept {
-    const T x = std::fabs(l.x), y = std::fabs(l.y);
-    const T f = clamp(std::atan2(y, x) * (T(2) / pi_v<T>), T(0), T(1));
-    const T u1 = clamp(unfold_quadrant_fraction(quadrant_of(l.x, l.y), f), T(0), T(1));
-    const T u2 = l.z > T(0) ? clamp(((x * x + y * y) / (T(1) + l.z)) / omc, T(0), T(1)) : T(1);
-    return glm::vec<2, T>(u1, u2);
-}
-
 }  // namespace detail
 
 /// Radial area-preserving map of the unit square onto a spherical ellipse (docs/math.md §4).
@@ -140,6 +109,9 @@ template <class T> class RadialMap {
 public:
     using vec2 = glm::vec<2, T>;  ///< a point of the unit square
     using vec3 = glm::vec<3, T>;  ///< a 3-D vector (direction, point or normal)
+    /// What SphereLight holds for this map: the same samples on a cap, without the
+    /// general-ellipse path (maps/cap.hpp).
+    using CapSampler = detail::CapMap<T, false, false>;
 
     /// Builds the map for `ellipse` (any SphericalEllipse, empty included: then every sample has
     /// pdf 0).

@@ -41,6 +41,7 @@
 #include "../detail/pairs.hpp"
 #include "../detail/polynomial_trig.hpp"
 #include "../detail/quadrant.hpp"
+#include "cap.hpp"
 #include "cumulative_area.hpp"
 #include "ld_radial.hpp"
 #include "radial.hpp"
@@ -64,6 +65,9 @@ template <class T> class TabulatedMap {
 public:
     using vec2 = glm::vec<2, T>;  ///< a point of the unit square
     using vec3 = glm::vec<3, T>;  ///< a 3-D vector (direction, point or normal)
+    /// What SphereLight holds for this map: the same samples on a cap, without the table walk
+    /// (maps/cap.hpp).
+    using CapSampler = detail::CapMap<T, false, true>;
 
     /// Builds the map for `ellipse` with the table `table` (set-up: the ellipse's semi-axis
     /// constants, kappa, the four blended rows and their weights; a paired square root and a few
@@ -356,6 +360,9 @@ template <class T> class TabulatedLdRadialMap {
 public:
     using vec2 = glm::vec<2, T>;  ///< a point of the unit square
     using vec3 = glm::vec<3, T>;  ///< a 3-D vector (direction, point or normal)
+    /// What SphereLight holds for this map: the same samples on a cap, without the table walk
+    /// (maps/cap.hpp).
+    using CapSampler = detail::CapMap<T, true, true>;
 
     /// Builds the map (as TabulatedMap; empty ellipse or invalid view: pdf 0 everywhere).
     APSE_FUNC TabulatedLdRadialMap(const SphericalEllipse<T>& ellipse, const TabulationView& table) noexcept
