@@ -173,13 +173,17 @@ struct SphereConePoint : SphereTag {
         return apse_bench::ConeSampler<T, true>(s.o, s.c, s.r);
     }
 };
+/// f(v) for the tabulated maps (built with the table), f() for the others.
+template <template <class> class Map, class T, class F> auto with_map_args(const apse::TabulationView& v, F&& f) {
+    if constexpr (std::is_constructible<Map<T>, const apse::SphericalEllipse<T>&, const apse::TabulationView&>::value)
+        return f(v);
+    else
+        return f();
+}
 /// project_sphere + Map<T> (the tabulated maps take the table).
 template <template <class> class Map, class T>
 Map<T> sphere_map(const SphereConfig<T>& s, const apse::TabulationView& v) {
-    if constexpr (std::is_constructible<Map<T>, const apse::SphericalEllipse<T>&, const apse::TabulationView&>::value)
-        return Map<T>(apse::project_sphere(s.o, s.c, s.r), v);
-    else
-        return Map<T>(apse::project_sphere(s.o, s.c, s.r));
+    return with_map_args<Map, T>(v, [&](const auto&... a) { return Map<T>(apse::project_sphere(s.o, s.c, s.r), a...); });
 }
 template <template <class> class Map, const char* Name> struct SphereMap : SphereTag {
     static constexpr const char* name = Name;
@@ -200,21 +204,16 @@ template <template <class> class Map, const char* Name, bool Cut> struct SphereC
 template <template <class> class Map, const char* Name> struct SphereCapSampler : SphereTag {
     static constexpr const char* name = Name;
     template <class T> static auto make(const SphereConfig<T>& s, const apse::TabulationView& v) {
-        using Cap = typename Map<T>::CapSampler;
-        if constexpr (std::is_constructible<Map<T>, const apse::SphericalEllipse<T>&, const apse::TabulationView&>::value)
-            return Cap(apse::project_sphere(s.o, s.c, s.r), v);
-        else
-            return Cap(apse::project_sphere(s.o, s.c, s.r));
+        return with_map_args<Map, T>(v, [&](const auto&... a) {
+            return typename Map<T>::CapSampler(apse::project_sphere(s.o, s.c, s.r), a...);
+        });
     }
 };
 /// SphereLight<Map<T>>: the direction, the point on the sphere and its distance.
 template <template <class> class Map, const char* Name> struct SphereLightOf : SphereTag {
     static constexpr const char* name = Name;
     template <class T> static auto make(const SphereConfig<T>& s, const apse::TabulationView& v) {
-        if constexpr (std::is_constructible<Map<T>, const apse::SphericalEllipse<T>&, const apse::TabulationView&>::value)
-            return apse::SphereLight<Map<T>>(s.o, s.c, s.r, v);
-        else
-            return apse::SphereLight<Map<T>>(s.o, s.c, s.r);
+        return with_map_args<Map, T>(v, [&](const auto&... a) { return apse::SphereLight<Map<T>>(s.o, s.c, s.r, a...); });
     }
 };
 /// SphereLight<CosineWeighted<Map<T>>> for the receiver normal with the cap cut by the horizon
@@ -222,12 +221,9 @@ template <template <class> class Map, const char* Name> struct SphereLightOf : S
 template <template <class> class Map, const char* Name, bool Cut> struct SphereLightCosine : SphereTag {
     static constexpr const char* name = Name;
     template <class T> static auto make(const SphereConfig<T>& s, const apse::TabulationView& v) {
-        using L = apse::SphereLight<apse::CosineWeighted<Map<T>>>;
-        const glm::vec<3, T>& n = Cut ? s.cut : s.above;
-        if constexpr (std::is_constructible<Map<T>, const apse::SphericalEllipse<T>&, const apse::TabulationView&>::value)
-            return L(s.o, s.c, s.r, v, n);
-        else
-            return L(s.o, s.c, s.r, n);
+        return with_map_args<Map, T>(v, [&](const auto&... a) {
+            return apse::SphereLight<apse::CosineWeighted<Map<T>>>(s.o, s.c, s.r, a..., Cut ? s.cut : s.above);
+        });
     }
 };
 constexpr char sphere_radial[] = "sphere_radial";

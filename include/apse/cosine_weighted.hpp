@@ -151,8 +151,10 @@ private:
         const bool normal_ok = scale > T(0) && is_finite(scale) && finite3(normal);
         if (normal_ok && plain_can_sample(cap, table)) {
             new (&u_.cap) ProjectedCapSampler<T>(cap, normal);  // built in place: no copy
-            if (!u_.cap.empty()) mode_ = Mode::cap;
-            if (mode_ == Mode::cap) return;
+            if (!u_.cap.empty()) {
+                mode_ = Mode::cap;
+                return;
+            }
         }
         if constexpr (std::is_constructible<Plain, const SphericalEllipse<T>&, const TabulationView&>::value) {
             new (&u_.plain) Plain(cap, *table);
@@ -162,15 +164,11 @@ private:
         if (!normal_ok && !u_.plain.empty()) mode_ = Mode::plain;
     }
 
-    /// Whether the map (Plain) can sample `cap`, without building it: a cap with a finite,
-    /// positive solid angle whose reciprocal is finite, and, for the tabulated maps, a valid
-    /// table (the maps' own conditions on a cap).
+    /// Whether the map (Plain) can sample `cap`, without building it: a cap with a finite
+    /// density 1/Omega and, for the tabulated maps, a usable table (the maps' own conditions on
+    /// a cap).
     static APSE_FUNC bool plain_can_sample(const SphericalEllipse<T>& cap, const TabulationView* table) noexcept {
-        if (table && !(table->cdf != nullptr && table->bins >= 1 && table->alpha_nodes >= 2 && table->ratio_nodes >= 2))
-            return false;
-        if (!cap.is_cap()) return false;
-        const T omega = cap.cap_solid_angle();
-        return omega > T(0) && is_finite(omega) && is_finite(T(1) / omega);
+        return (!table || table_usable(*table)) && cap_density(cap) > T(0);
     }
 
     Mode mode_;

@@ -61,6 +61,14 @@ template <class T> APSE_FUNC glm::vec<2, T> cap_coordinates(const glm::vec<3, T>
     return glm::vec<2, T>(u1, u2);
 }
 
+/// 1/Omega of a cap (Omega = cap_solid_angle()) when it is finite and positive; 0 for an ellipse
+/// that is not a cap (or empty) and for a density that overflows.
+template <class T> APSE_HOT_INLINE T cap_density(const SphericalEllipse<T>& e) noexcept {
+    if (!e.is_cap()) return T(0);
+    const T inv = T(1) / e.cap_solid_angle();
+    return is_finite(inv) && inv > T(0) ? inv : T(0);
+}
+
 /// The samples of RadialMap (Ld false) or LdRadialMap (Ld true) — and of TabulatedMap and
 /// TabulatedLdRadialMap (Tabulated true: built with a TabulationView, which a cap does not read
 /// but whose validity decides, as in those maps, whether the map can sample) — on a spherical
@@ -77,14 +85,14 @@ public:
     /// The sampler of `cap` (RadialMap, LdRadialMap).
     template <bool Tab = Tabulated, std::enable_if_t<!Tab, int> = 0>
     APSE_HOT_INLINE explicit CapMap(const SphericalEllipse<T>& cap) noexcept : cap_(cap) {
-        set_up(true);
+        inv_omega_ = cap_density(cap);
     }
 
     /// The sampler of `cap` with the table a tabulated map would be given (TabulatedMap,
     /// TabulatedLdRadialMap): empty, as the map, when the view is not a valid table.
     template <bool Tab = Tabulated, std::enable_if_t<Tab, int> = 0>
     APSE_HOT_INLINE CapMap(const SphericalEllipse<T>& cap, const TabulationView& table) noexcept : cap_(cap) {
-        set_up(table.cdf != nullptr && table.bins >= 1 && table.alpha_nodes >= 2 && table.ratio_nodes >= 2);
+        inv_omega_ = table_usable(table) ? cap_density(cap) : T(0);
     }
 
     /// The cap sampled (possibly empty).
@@ -125,15 +133,6 @@ public:
     }
 
 private:
-    /// 1/Omega when the cap can be sampled (`usable`: the table's validity) and its density is
-    /// finite; 0 otherwise.
-    APSE_HOT_INLINE void set_up(bool usable) noexcept {
-        inv_omega_ = T(0);
-        if (!usable || !cap_.is_cap()) return;
-        const T inv = T(1) / cap_.cap_solid_angle();
-        if (is_finite(inv) && inv > T(0)) inv_omega_ = inv;
-    }
-
     SphericalEllipse<T> cap_;
     T inv_omega_;  ///< 1/Omega; 0 when empty
 };

@@ -76,12 +76,11 @@ public:
     APSE_HOT_INLINE TabulatedMap(const SphericalEllipse<T>& ellipse, const TabulationView& table) noexcept
         : ellipse_(ellipse), axes_(detail::EllipseAxes<T>::make(ellipse)), bins_(table.bins) {
         for (int r = 0; r < 4; ++r) { rows_[r] = table.cdf; weights_[r] = T(0); }
-        valid_ = !ellipse.empty() && table.cdf != nullptr && table.bins >= 1 && table.alpha_nodes >= 2 &&
-                 table.ratio_nodes >= 2 && ellipse.tan_alpha > T(0);
+        valid_ = !ellipse.empty() && detail::table_usable(table) && ellipse.tan_alpha > T(0);
         // a cap's azimuthal CDF is exactly linear: sample() draws it exactly, density 1/Omega
         cap_ = ellipse.is_cap();
-        cap_inv_omega_ = cap_ ? T(1) / ellipse.cap_solid_angle() : T(0);
-        if (cap_ && !(detail::is_finite(cap_inv_omega_) && cap_inv_omega_ > T(0))) valid_ = false;  // no finite density
+        cap_inv_omega_ = cap_ ? detail::cap_density(ellipse) : T(0);
+        if (cap_ && !(cap_inv_omega_ > T(0))) valid_ = false;  // no finite density
         // kappa^2 = (1 + cos alpha)/(1 + cos beta) and its inverse, paired (1 for a cap); then
         // kappa and sqrt(cos alpha), paired
         T inv_kappa2 = T(1), sqrt_ca;

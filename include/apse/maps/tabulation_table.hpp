@@ -39,6 +39,12 @@ struct TabulationView {
 
 namespace detail {
 
+/// Whether `table` can serve a tabulated map: rows present, at least one bin and two nodes per
+/// axis (a tabulated map, or its cap sampler, built with any other view is empty).
+APSE_FUNC bool table_usable(const TabulationView& table) noexcept {
+    return table.cdf != nullptr && table.bins >= 1 && table.alpha_nodes >= 2 && table.ratio_nodes >= 2;
+}
+
 /// Unnormalised area density of the quadrant in the Lambert anomaly lambda (maps/tabulated.hpp
 /// file comment), divided by the constant a b: kappa / ((1 + C(tau)) (cos^2 lambda + kappa^2
 /// sin^2 lambda)), for cos alpha = ca, cos beta = cb, kappa = sqrt((1 + ca)/(1 + cb)), lambda in
