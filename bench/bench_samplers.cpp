@@ -5,7 +5,8 @@
 // light's stored DiskFrame, as a renderer keeps it: per shading point only c − o); "area_frame_
 // per_point" is the same sampler building the frame at every shading point. Compare ratios to
 // the reference measured in the same run, never absolute times. Timing goals live here, never in
-// tests.
+// tests. Every factory is inlined into the timed loop (APSE_BENCH_INLINE, support/context.hpp),
+// the reference's and apse's alike, as a renderer builds its light sampler in its shading code.
 //
 // Sphere lights (tools/bench_table.py's sphere table): the same measurements over 1024 seeded
 // sphere lights (support/sphere_configs.hpp: shading points 1.05–50 radii from the centre), named
@@ -60,20 +61,20 @@ using apse_bench::DiskConfigs;
 // Sampler factories: make(disk, table view) builds the sampler for one shading point.
 struct Area {  // the reference: the light's frame stored with the light (DiskConfig::frame)
     static constexpr const char* name = "area";
-    template <class T> static auto make(const DiskConfig<T>& d, const apse::TabulationView&) {
+    template <class T> APSE_BENCH_INLINE static auto make(const DiskConfig<T>& d, const apse::TabulationView&) {
         return apse::DiskAreaSampler<T>(d.o, d.frame);
     }
 };
 struct AreaFramePerPoint {  // the same sampler, its frame rebuilt at every shading point
     static constexpr const char* name = "area_frame_per_point";
-    template <class T> static auto make(const DiskConfig<T>& d, const apse::TabulationView&) {
+    template <class T> APSE_BENCH_INLINE static auto make(const DiskConfig<T>& d, const apse::TabulationView&) {
         return apse::DiskAreaSampler<T>(d.o, d.c, d.n, d.r);
     }
 };
 // Parts of the set-up (cost breakdown only; set-up runs, no samples).
 struct Projection {
     static constexpr const char* name = "projection";
-    template <class T> static auto make(const DiskConfig<T>& d, const apse::TabulationView&) {
+    template <class T> APSE_BENCH_INLINE static auto make(const DiskConfig<T>& d, const apse::TabulationView&) {
         return apse::project_disk(d.o, d.frame);
     }
 };
@@ -83,56 +84,56 @@ template <class T> struct EllipseAndSolidAngle {
 };
 struct ProjectionSolidAngle {
     static constexpr const char* name = "projection_solid_angle";
-    template <class T> static auto make(const DiskConfig<T>& d, const apse::TabulationView&) {
+    template <class T> APSE_BENCH_INLINE static auto make(const DiskConfig<T>& d, const apse::TabulationView&) {
         const apse::SphericalEllipse<T> e = apse::project_disk(d.o, d.frame);
         return EllipseAndSolidAngle<T>{e, e.solid_angle()};
     }
 };
 struct Rectangle {  // the disk's circumscribed square, sampled without rejection
     static constexpr const char* name = "rectangle";
-    template <class T> static auto make(const DiskConfig<T>& d, const apse::TabulationView&) {
+    template <class T> APSE_BENCH_INLINE static auto make(const DiskConfig<T>& d, const apse::TabulationView&) {
         return apse::SphericalRectangle<T>::from_center(d.o, d.c, d.r * d.half_x, d.r * d.half_y);
     }
 };
 struct GamitoSingleShot {
     static constexpr const char* name = "gamito_single_shot";
-    template <class T> static auto make(const DiskConfig<T>& d, const apse::TabulationView&) {
+    template <class T> APSE_BENCH_INLINE static auto make(const DiskConfig<T>& d, const apse::TabulationView&) {
         return apse::GamitoSingleShot<T>(d.o, d.c, d.n, d.r);
     }
 };
 struct GamitoRetry8 {
     static constexpr const char* name = "gamito_retry8";
-    template <class T> static auto make(const DiskConfig<T>& d, const apse::TabulationView&) {
+    template <class T> APSE_BENCH_INLINE static auto make(const DiskConfig<T>& d, const apse::TabulationView&) {
         return apse::GamitoRetry<T>(d.o, d.c, d.n, d.r, 8);
     }
 };
 struct Radial {
     static constexpr const char* name = "radial";
-    template <class T> static auto make(const DiskConfig<T>& d, const apse::TabulationView&) {
+    template <class T> APSE_BENCH_INLINE static auto make(const DiskConfig<T>& d, const apse::TabulationView&) {
         return apse::RadialMap<T>(apse::project_disk(d.o, d.frame));
     }
 };
 struct LdRadial {
     static constexpr const char* name = "ld_radial";
-    template <class T> static auto make(const DiskConfig<T>& d, const apse::TabulationView&) {
+    template <class T> APSE_BENCH_INLINE static auto make(const DiskConfig<T>& d, const apse::TabulationView&) {
         return apse::LdRadialMap<T>(apse::project_disk(d.o, d.frame));
     }
 };
 struct Parallel {
     static constexpr const char* name = "parallel";
-    template <class T> static auto make(const DiskConfig<T>& d, const apse::TabulationView&) {
+    template <class T> APSE_BENCH_INLINE static auto make(const DiskConfig<T>& d, const apse::TabulationView&) {
         return apse::ParallelMap<T>(apse::project_disk(d.o, d.frame));
     }
 };
 struct Tabulated {
     static constexpr const char* name = "tabulated";
-    template <class T> static auto make(const DiskConfig<T>& d, const apse::TabulationView& v) {
+    template <class T> APSE_BENCH_INLINE static auto make(const DiskConfig<T>& d, const apse::TabulationView& v) {
         return apse::TabulatedMap<T>(apse::project_disk(d.o, d.frame), v);
     }
 };
 struct TabulatedLdRadial {
     static constexpr const char* name = "tabulated_ld_radial";
-    template <class T> static auto make(const DiskConfig<T>& d, const apse::TabulationView& v) {
+    template <class T> APSE_BENCH_INLINE static auto make(const DiskConfig<T>& d, const apse::TabulationView& v) {
         return apse::TabulatedLdRadialMap<T>(apse::project_disk(d.o, d.frame), v);
     }
 };
@@ -142,7 +143,7 @@ struct TabulatedLdRadial {
 // Nodes = 0: the default.
 template <class Plain, const char* Name, int Nodes = 0> struct Cosine {
     static constexpr const char* name = Name;
-    template <class T> static auto make(const DiskConfig<T>& d, const apse::TabulationView& v) {
+    template <class T> APSE_BENCH_INLINE static auto make(const DiskConfig<T>& d, const apse::TabulationView& v) {
         using Map = decltype(Plain::make(d, v));
         if constexpr (Nodes == 0) return apse::CosineWeighted<Map>(Plain::make(d, v), d.half_y);
         else return apse::CosineWeighted<Map, Nodes>(Plain::make(d, v), d.half_y);
@@ -163,18 +164,18 @@ using apse_bench::SphereConfig;
 struct SphereTag {};
 struct SphereCone : SphereTag {
     static constexpr const char* name = "sphere_cone";
-    template <class T> static auto make(const SphereConfig<T>& s, const apse::TabulationView&) {
+    template <class T> APSE_BENCH_INLINE static auto make(const SphereConfig<T>& s, const apse::TabulationView&) {
         return apse_bench::ConeSampler<T, false>(s.o, s.c, s.r);
     }
 };
 struct SphereConePoint : SphereTag {
     static constexpr const char* name = "sphere_cone_point";
-    template <class T> static auto make(const SphereConfig<T>& s, const apse::TabulationView&) {
+    template <class T> APSE_BENCH_INLINE static auto make(const SphereConfig<T>& s, const apse::TabulationView&) {
         return apse_bench::ConeSampler<T, true>(s.o, s.c, s.r);
     }
 };
 /// f(v) for the tabulated maps (built with the table), f() for the others.
-template <template <class> class Map, class T, class F> auto with_map_args(const apse::TabulationView& v, F&& f) {
+template <template <class> class Map, class T, class F> APSE_BENCH_INLINE auto with_map_args(const apse::TabulationView& v, F&& f) {
     if constexpr (std::is_constructible<Map<T>, const apse::SphericalEllipse<T>&, const apse::TabulationView&>::value)
         return f(v);
     else
@@ -182,12 +183,12 @@ template <template <class> class Map, class T, class F> auto with_map_args(const
 }
 /// project_sphere + Map<T> (the tabulated maps take the table).
 template <template <class> class Map, class T>
-Map<T> sphere_map(const SphereConfig<T>& s, const apse::TabulationView& v) {
-    return with_map_args<Map, T>(v, [&](const auto&... a) { return Map<T>(apse::project_sphere(s.o, s.c, s.r), a...); });
+APSE_BENCH_INLINE Map<T> sphere_map(const SphereConfig<T>& s, const apse::TabulationView& v) {
+    return with_map_args<Map, T>(v, [&](const auto&... a) APSE_BENCH_INLINE_LAMBDA { return Map<T>(apse::project_sphere(s.o, s.c, s.r), a...); });
 }
 template <template <class> class Map, const char* Name> struct SphereMap : SphereTag {
     static constexpr const char* name = Name;
-    template <class T> static auto make(const SphereConfig<T>& s, const apse::TabulationView& v) {
+    template <class T> APSE_BENCH_INLINE static auto make(const SphereConfig<T>& s, const apse::TabulationView& v) {
         return sphere_map<Map>(s, v);
     }
 };
@@ -195,7 +196,7 @@ template <template <class> class Map, const char* Name> struct SphereMap : Spher
 /// horizon (Cut) or above it.
 template <template <class> class Map, const char* Name, bool Cut> struct SphereCosine : SphereTag {
     static constexpr const char* name = Name;
-    template <class T> static auto make(const SphereConfig<T>& s, const apse::TabulationView& v) {
+    template <class T> APSE_BENCH_INLINE static auto make(const SphereConfig<T>& s, const apse::TabulationView& v) {
         return apse::CosineWeighted<Map<T>>(sphere_map<Map>(s, v), Cut ? s.cut : s.above);
     }
 };
@@ -203,8 +204,8 @@ template <template <class> class Map, const char* Name, bool Cut> struct SphereC
 /// map's samples on a cap, without its general-ellipse path), direction only.
 template <template <class> class Map, const char* Name> struct SphereCapSampler : SphereTag {
     static constexpr const char* name = Name;
-    template <class T> static auto make(const SphereConfig<T>& s, const apse::TabulationView& v) {
-        return with_map_args<Map, T>(v, [&](const auto&... a) {
+    template <class T> APSE_BENCH_INLINE static auto make(const SphereConfig<T>& s, const apse::TabulationView& v) {
+        return with_map_args<Map, T>(v, [&](const auto&... a) APSE_BENCH_INLINE_LAMBDA {
             return typename Map<T>::CapSampler(apse::project_sphere(s.o, s.c, s.r), a...);
         });
     }
@@ -212,16 +213,16 @@ template <template <class> class Map, const char* Name> struct SphereCapSampler 
 /// SphereLight<Map<T>>: the direction, the point on the sphere and its distance.
 template <template <class> class Map, const char* Name> struct SphereLightOf : SphereTag {
     static constexpr const char* name = Name;
-    template <class T> static auto make(const SphereConfig<T>& s, const apse::TabulationView& v) {
-        return with_map_args<Map, T>(v, [&](const auto&... a) { return apse::SphereLight<Map<T>>(s.o, s.c, s.r, a...); });
+    template <class T> APSE_BENCH_INLINE static auto make(const SphereConfig<T>& s, const apse::TabulationView& v) {
+        return with_map_args<Map, T>(v, [&](const auto&... a) APSE_BENCH_INLINE_LAMBDA { return apse::SphereLight<Map<T>>(s.o, s.c, s.r, a...); });
     }
 };
 /// SphereLight<CosineWeighted<Map<T>>> for the receiver normal with the cap cut by the horizon
 /// (Cut) or above it.
 template <template <class> class Map, const char* Name, bool Cut> struct SphereLightCosine : SphereTag {
     static constexpr const char* name = Name;
-    template <class T> static auto make(const SphereConfig<T>& s, const apse::TabulationView& v) {
-        return with_map_args<Map, T>(v, [&](const auto&... a) {
+    template <class T> APSE_BENCH_INLINE static auto make(const SphereConfig<T>& s, const apse::TabulationView& v) {
+        return with_map_args<Map, T>(v, [&](const auto&... a) APSE_BENCH_INLINE_LAMBDA {
             return apse::SphereLight<apse::CosineWeighted<Map<T>>>(s.o, s.c, s.r, a..., Cut ? s.cut : s.above);
         });
     }

@@ -6,6 +6,19 @@
 #include <fstream>
 #include <string>
 
+/// A sampler factory's `make` (and the lambdas it calls) is inlined into the timed loop, as a
+/// renderer constructs its light sampler inline in its shading code: in a translation unit that
+/// instantiates every sampler, GCC's inlining budget would otherwise leave some factories as
+/// calls and not others, and a call returns the sampler through memory (a large object is then
+/// written and read back per shading point), which measures the harness, not the sampler.
+#if defined(__GNUC__)
+#define APSE_BENCH_INLINE __attribute__((always_inline)) inline
+#define APSE_BENCH_INLINE_LAMBDA __attribute__((always_inline))
+#else
+#define APSE_BENCH_INLINE inline
+#define APSE_BENCH_INLINE_LAMBDA
+#endif
+
 namespace apse_bench {
 
 /// The compiler and its version.

@@ -107,7 +107,7 @@ public:
     /// from the normal to the centre, a the cap's angular radius), and for a projected solid
     /// angle so small (subnormal: a cap below ~1e-154 rad in double) that its reciprocal, the
     /// density's scale, overflows.
-    APSE_FUNC ProjectedCapSampler(const SphericalEllipse<T>& cap, const vec3& receiver_normal) noexcept {
+    APSE_HOT_INLINE ProjectedCapSampler(const SphericalEllipse<T>& cap, const vec3& receiver_normal) noexcept {
         if (!cap.is_cap()) return;
         const T scale = detail::max_abs3(receiver_normal);
         if (!(scale > T(0)) || !detail::is_finite(scale) || !detail::finite3(receiver_normal)) return;
@@ -225,7 +225,7 @@ public:
     /// cap's radius in float) is moved towards the centre by as much, so that pdf() of every
     /// direction returned with pdf > 0 is that pdf to rounding (declined if that fails, e.g. for
     /// a cap narrower than the rounding of a direction).
-    APSE_FUNC DirectionSample<T> sample(const vec2& u) const noexcept {
+    APSE_HOT_INLINE DirectionSample<T> sample(const vec2& u) const noexcept {
         bool ok = !empty_;
         const vec2 uc = detail::clamp_unit(u, ok);
         if (!ok) return {c_, T(0)};
@@ -246,8 +246,66 @@ public:
             const T z = qz + t;
             const T p = sa_ * dx - t * sg_, q = sa_ * dy, s = ca_ + t * cg_;
             const vec3 w = p * e1_ + q * e2_ + s * c_;
-            return inside(w, z > T(0) ? z * inv_area_ : T(0));
+            return inside(w, z > T(0) ? z * inv_area_ : T(0), surely_inside(p, q, s, z));
         }
+        return sample_cut(uc);
+    }
+
+    /// Density of sample() at the world-space direction `d` (any non-zero length), in solid
+    /// angle: max(0, n·ω) / Omega_perp inside the cap (SphericalEllipse::contains), 0 outside,
+    /// below the horizon, for empty() or a zero/NaN direction.
+    APSE_FUNC T pdf(const vec3& d) const noexcept {
+        if (empty_) return T(0);
+        bool ok = true;
+        const vec3 l = detail::normalize_direction(d, ok);
+        if (!ok || !e_.contains(l)) return T(0);
+        const T c = glm::dot(n_, l);
+        return c > T(0) ? c * inv_area_ : T(0);
+    }
+
+    /// The point of the unit square whose sample has direction `d` (any non-zero length): the
+    /// inverse of sample(). Directions outside the cap or below the horizon: the same formulas,
+    /// clamped into [0, 1]^2. Zero/NaN direction or empty(): (0, 0).
+    APSE_FUNC vec2 invert(const vec3& d) const noexcept {
+        if (empty_) return vec2(T(0));
+        bool ok = true;
+        const vec3 l = detail::normalize_direction(d, ok);
+        if (!ok) return vec2(T(0));
+        const T p = glm::dot(l, e1_), q = glm::dot(l, e2_), s = glm::dot(l, c_);
+        // s − cos a = (1 − cos a) − (1 − s), 1 − s = (p^2 + q^2)/(1 + s)
+        const T s_minus_ca = omca_ - (p * p + q * q) / (T(1) + detail::max_of(s, T(0)));
+        if (!cut_) {
+            // back along n to the flat disk: t = (s − cos a)/cos g, disk point ((p + t sin g), q)/sin a
+            const T t = cg_ > T(0) ? s_minus_ca / cg_ : T(0);
+            const T dx = (p + t * sg_) / sa_, dy = q / sa_;
+            const T r = detail::hypot2(dx, dy);
+            const T turns = r > T(0) ? std::atan2(dy, dx) * T(0.15915494309189533577) : T(0);
+            return detail::concentric_from_disk(detail::min_of(r, T(1)), turns);
+        }
+        const T sth = detail::min_of(std::fabs(q) / sa_, T(1));
+        const T cth = std::sqrt((T(1) - sth) * (T(1) + sth));
+        const T th = std::atan2(sth, cth);
+        T below, width;  // the area from y = 0 to |y|, the width at y
+        // x − x_lo = cos g (p + sin a cos theta) + sin g (s − cos a)
+        const T dxl = cg_ * (p + sa_ * cth) + sg_ * s_minus_ca;
+        if (th > theta_t_ && outer_ > T(0)) {
+            below = half_ - ap_ * sa_ * detail::angle_minus_sin_cos(half_pi_v<T> - th, cth, sth, T(1));
+            width = T(2) * ap_ * cth;
+        } else {
+            const T w = rim_w(cth);
+            below = inner_area<false>(detail::min_of(th, theta_t_), sth, cth, w, T(1) / (T(1) + w));
+            width = inner_width(cth, w);
+        }
+        const T u1 = T(0.5) + (q < T(0) ? T(-0.5) : T(0.5)) * (below / half_);
+        const T u2 = width > T(0) ? dxl / width : T(0);
+        return vec2(detail::clamp(u1, T(0), T(1)), detail::clamp(u2, T(0), T(1)));
+    }
+
+private:
+    /// sample() where the horizon cuts the cap (uc clamped, the sampler not empty): u1 → y by
+    /// inverting the visible region's cumulative area, then x = x_lo + u2 L (file comment). Out
+    /// of line from sample(): its root finding would otherwise be compiled into every caller.
+    APSE_FUNC DirectionSample<T> sample_cut(const vec2& uc) const noexcept {
         const T v = T(2) * uc.x - T(1);
         const T side = v < T(0) ? T(-1) : T(1);
         const T f = std::fabs(v);
@@ -304,60 +362,24 @@ public:
         const T s = sg_ * x + cg_ * z;
         const vec3 dir = p * e1_ + q * e2_ + s * c_;
         const T pd = z * inv_area_;
-        return inside(dir, pd > T(0) && glm::dot(n_, dir) > T(0) ? pd : T(0));
+        const T height = glm::dot(n_, dir);
+        return inside(dir, pd > T(0) && height > T(0) ? pd : T(0), surely_inside(p, q, s, height));
     }
 
-    /// Density of sample() at the world-space direction `d` (any non-zero length), in solid
-    /// angle: max(0, n·ω) / Omega_perp inside the cap (SphericalEllipse::contains), 0 outside,
-    /// below the horizon, for empty() or a zero/NaN direction.
-    APSE_FUNC T pdf(const vec3& d) const noexcept {
-        if (empty_) return T(0);
-        bool ok = true;
-        const vec3 l = detail::normalize_direction(d, ok);
-        if (!ok || !e_.contains(l)) return T(0);
-        const T c = glm::dot(n_, l);
-        return c > T(0) ? c * inv_area_ : T(0);
+    /// True if pdf() certainly finds the direction w = p e1 + q e2 + s c (|w| = 1 to rounding, as
+    /// sample() assembles it) inside the cap and above the horizon, w's height over it being
+    /// `height` (n·w to rounding): the gnomonic radius |(p, q)| / s at most tan a by a margin
+    /// larger than the rounding of w, of pdf()'s normalisation and of the cap's own cone test (each
+    /// component of w and of its local coordinates within ~20 eps of T absolute, the test's ratio
+    /// within a few eps relative: 64 eps absolute and 8 eps relative cover them), and the height
+    /// above 32 eps. Saves sample() the pdf() check of inside() for all but the samples within
+    /// that margin of the rim or the horizon.
+    APSE_HOT_INLINE bool surely_inside(T p, T q, T s, T height) const noexcept {
+        const T ta = e_.tan_alpha;
+        const T lim = s * ta * (T(1) - T(8) * epsilon<T>()) - T(64) * epsilon<T>() * (T(1) + ta);
+        return height > T(32) * epsilon<T>() && lim > T(0) && p * p + q * q <= lim * lim;
     }
 
-    /// The point of the unit square whose sample has direction `d` (any non-zero length): the
-    /// inverse of sample(). Directions outside the cap or below the horizon: the same formulas,
-    /// clamped into [0, 1]^2. Zero/NaN direction or empty(): (0, 0).
-    APSE_FUNC vec2 invert(const vec3& d) const noexcept {
-        if (empty_) return vec2(T(0));
-        bool ok = true;
-        const vec3 l = detail::normalize_direction(d, ok);
-        if (!ok) return vec2(T(0));
-        const T p = glm::dot(l, e1_), q = glm::dot(l, e2_), s = glm::dot(l, c_);
-        // s − cos a = (1 − cos a) − (1 − s), 1 − s = (p^2 + q^2)/(1 + s)
-        const T s_minus_ca = omca_ - (p * p + q * q) / (T(1) + detail::max_of(s, T(0)));
-        if (!cut_) {
-            // back along n to the flat disk: t = (s − cos a)/cos g, disk point ((p + t sin g), q)/sin a
-            const T t = cg_ > T(0) ? s_minus_ca / cg_ : T(0);
-            const T dx = (p + t * sg_) / sa_, dy = q / sa_;
-            const T r = detail::hypot2(dx, dy);
-            const T turns = r > T(0) ? std::atan2(dy, dx) * T(0.15915494309189533577) : T(0);
-            return detail::concentric_from_disk(detail::min_of(r, T(1)), turns);
-        }
-        const T sth = detail::min_of(std::fabs(q) / sa_, T(1));
-        const T cth = std::sqrt((T(1) - sth) * (T(1) + sth));
-        const T th = std::atan2(sth, cth);
-        T below, width;  // the area from y = 0 to |y|, the width at y
-        // x − x_lo = cos g (p + sin a cos theta) + sin g (s − cos a)
-        const T dxl = cg_ * (p + sa_ * cth) + sg_ * s_minus_ca;
-        if (th > theta_t_ && outer_ > T(0)) {
-            below = half_ - ap_ * sa_ * detail::angle_minus_sin_cos(half_pi_v<T> - th, cth, sth, T(1));
-            width = T(2) * ap_ * cth;
-        } else {
-            const T w = rim_w(cth);
-            below = inner_area<false>(detail::min_of(th, theta_t_), sth, cth, w, T(1) / (T(1) + w));
-            width = inner_width(cth, w);
-        }
-        const T u1 = T(0.5) + (q < T(0) ? T(-0.5) : T(0.5)) * (below / half_);
-        const T u2 = width > T(0) ? dxl / width : T(0);
-        return vec2(detail::clamp(u1, T(0), T(1)), detail::clamp(u2, T(0), T(1)));
-    }
-
-private:
     /// The stopping rule of the inversions, relative to the area of the piece inverted: 16 eps of
     /// T, above the rounding of the area evaluated per step (a few eps; a tighter rule would only
     /// make the last steps chase rounding).
@@ -367,8 +389,14 @@ private:
     /// the cap (or pd is 0); otherwise moved towards the centre along the great circle in steps of
     /// 4, 8, 16, 32 eps of T in angle (the rounding of w and of pdf()'s own test) until pdf() does, the
     /// density then pdf()'s; still outside: pdf 0 (declined).
-    APSE_FUNC DirectionSample<T> inside(vec3 w, T pd) const noexcept {
-        if (!(pd > T(0)) || pdf(w) > T(0)) return {w, pd};
+    APSE_HOT_INLINE DirectionSample<T> inside(vec3 w, T pd, bool sure) const noexcept {
+        if (sure || !(pd > T(0))) return {w, pd};
+        return moved_inside(w, pd);
+    }
+
+    /// inside() for a sample not surely inside: pdf() decides.
+    APSE_FUNC DirectionSample<T> moved_inside(vec3 w, T pd) const noexcept {
+        if (pdf(w) > T(0)) return {w, pd};
         // w + k c turns w at the rim towards c by about k sin a: k = 4 eps / sin a for 4 eps
         T k = detail::min_of(T(4) * epsilon<T>() / sa_, T(1));
         for (int i = 0; i < 4; ++i, k = detail::min_of(T(2) * k, T(1))) {

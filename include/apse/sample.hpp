@@ -104,7 +104,7 @@ template <class S> constexpr bool counts_iterations_v = counts_iterations<S>::va
 /// counts_iterations). Works for every apse sampler; for benchmarks and tests (the samplers'
 /// own `sample(u)` carries no diagnostics, so the rendering path pays nothing for them).
 template <class Sampler, class T>
-APSE_FUNC auto sample_with_diagnostics(const Sampler& sampler, const glm::vec<2, T>& u,
+APSE_HOT_INLINE auto sample_with_diagnostics(const Sampler& sampler, const glm::vec<2, T>& u,
                                        SampleDiagnostics& diagnostics) noexcept {
     diagnostics.iterations = 0;
     if constexpr (counts_iterations<Sampler>::value)

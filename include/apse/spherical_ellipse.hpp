@@ -206,7 +206,7 @@ template <class T> struct SphericalEllipse {
     }
 
     /// World → ellipse frame: (dot(w, x), dot(w, y), dot(w, z)). Any vector, any length.
-    APSE_FUNC vec3 to_local(const vec3& world) const noexcept {
+    APSE_HOT_INLINE vec3 to_local(const vec3& world) const noexcept {
         return vec3(glm::dot(world, x), glm::dot(world, y), glm::dot(world, z));
     }
 

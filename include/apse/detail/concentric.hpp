@@ -89,7 +89,7 @@ template <class T> struct ConcentricSigned {
 /// form: A = 2u1 − 1, B = 2u2 − 1; if |A| > |B|: (A, (pi/4)(B/A)), else (B, pi/2 − (pi/4)(A/B));
 /// the square's centre → (0, 0). One division. Domain [0, 1]^2; coordinates outside are clamped
 /// into it (NaN → 0).
-template <class T> APSE_FUNC ConcentricSigned<T> concentric_to_disk_signed(const glm::vec<2, T>& u) noexcept {
+template <class T> APSE_HOT_INLINE ConcentricSigned<T> concentric_to_disk_signed(const glm::vec<2, T>& u) noexcept {
     const T a = T(2) * clamp(u.x, T(0), T(1)) - T(1);
     const T b = T(2) * clamp(u.y, T(0), T(1)) - T(1);
     const T quarter_pi = T(0.25) * pi_v<T>;
