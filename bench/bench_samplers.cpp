@@ -5,8 +5,7 @@
 // light's stored DiskFrame, as a renderer keeps it: per shading point only c − o); "area_frame_
 // per_point" is the same sampler building the frame at every shading point. Compare ratios to
 // the reference measured in the same run, never absolute times. Timing goals live here, never in
-// tests. Every factory is inlined into the timed loop (APSE_BENCH_INLINE, support/context.hpp),
-// the reference's and apse's alike, as a renderer builds its light sampler in its shading code.
+// tests.
 //
 // Sphere lights (tools/bench_table.py's sphere table): the same measurements over 1024 seeded
 // sphere lights (support/sphere_configs.hpp: shading points 1.05–50 radii from the centre), named
@@ -14,7 +13,10 @@
 // direction part of Sphere::Sample: the cone the sphere subtends, sampled uniformly in a frame
 // built per shading point, as pbrt does), "sphere_cone"; "sphere_cone_point" adds the point on the
 // sphere and its distance, the reference of the SphereLight rows. The cosine-weighted rows come in
-// two sets of receivers: the cap above the horizon (…_above) and cut by it (…_cut).
+// two sets of receivers: the cap above the horizon (…_above) and cut by it (…_cut). Every sphere
+// factory, the reference's and apse's alike, is inlined into the timed loop (APSE_BENCH_INLINE,
+// support/context.hpp), as a renderer builds its light sampler in its shading code. (The disk
+// factories are left to the compiler, as in the README's disk table, measured that way.)
 //
 // Cost breakdown (tools/bench_table.py's second table): <sampler>/<type>/0 is the set-up alone
 // (every field of the map kept observable), "projection" is project_disk alone and
@@ -61,20 +63,20 @@ using apse_bench::DiskConfigs;
 // Sampler factories: make(disk, table view) builds the sampler for one shading point.
 struct Area {  // the reference: the light's frame stored with the light (DiskConfig::frame)
     static constexpr const char* name = "area";
-    template <class T> APSE_BENCH_INLINE static auto make(const DiskConfig<T>& d, const apse::TabulationView&) {
+    template <class T> static auto make(const DiskConfig<T>& d, const apse::TabulationView&) {
         return apse::DiskAreaSampler<T>(d.o, d.frame);
     }
 };
 struct AreaFramePerPoint {  // the same sampler, its frame rebuilt at every shading point
     static constexpr const char* name = "area_frame_per_point";
-    template <class T> APSE_BENCH_INLINE static auto make(const DiskConfig<T>& d, const apse::TabulationView&) {
+    template <class T> static auto make(const DiskConfig<T>& d, const apse::TabulationView&) {
         return apse::DiskAreaSampler<T>(d.o, d.c, d.n, d.r);
     }
 };
 // Parts of the set-up (cost breakdown only; set-up runs, no samples).
 struct Projection {
     static constexpr const char* name = "projection";
-    template <class T> APSE_BENCH_INLINE static auto make(const DiskConfig<T>& d, const apse::TabulationView&) {
+    template <class T> static auto make(const DiskConfig<T>& d, const apse::TabulationView&) {
         return apse::project_disk(d.o, d.frame);
     }
 };
@@ -84,56 +86,56 @@ template <class T> struct EllipseAndSolidAngle {
 };
 struct ProjectionSolidAngle {
     static constexpr const char* name = "projection_solid_angle";
-    template <class T> APSE_BENCH_INLINE static auto make(const DiskConfig<T>& d, const apse::TabulationView&) {
+    template <class T> static auto make(const DiskConfig<T>& d, const apse::TabulationView&) {
         const apse::SphericalEllipse<T> e = apse::project_disk(d.o, d.frame);
         return EllipseAndSolidAngle<T>{e, e.solid_angle()};
     }
 };
 struct Rectangle {  // the disk's circumscribed square, sampled without rejection
     static constexpr const char* name = "rectangle";
-    template <class T> APSE_BENCH_INLINE static auto make(const DiskConfig<T>& d, const apse::TabulationView&) {
+    template <class T> static auto make(const DiskConfig<T>& d, const apse::TabulationView&) {
         return apse::SphericalRectangle<T>::from_center(d.o, d.c, d.r * d.half_x, d.r * d.half_y);
     }
 };
 struct GamitoSingleShot {
     static constexpr const char* name = "gamito_single_shot";
-    template <class T> APSE_BENCH_INLINE static auto make(const DiskConfig<T>& d, const apse::TabulationView&) {
+    template <class T> static auto make(const DiskConfig<T>& d, const apse::TabulationView&) {
         return apse::GamitoSingleShot<T>(d.o, d.c, d.n, d.r);
     }
 };
 struct GamitoRetry8 {
     static constexpr const char* name = "gamito_retry8";
-    template <class T> APSE_BENCH_INLINE static auto make(const DiskConfig<T>& d, const apse::TabulationView&) {
+    template <class T> static auto make(const DiskConfig<T>& d, const apse::TabulationView&) {
         return apse::GamitoRetry<T>(d.o, d.c, d.n, d.r, 8);
     }
 };
 struct Radial {
     static constexpr const char* name = "radial";
-    template <class T> APSE_BENCH_INLINE static auto make(const DiskConfig<T>& d, const apse::TabulationView&) {
+    template <class T> static auto make(const DiskConfig<T>& d, const apse::TabulationView&) {
         return apse::RadialMap<T>(apse::project_disk(d.o, d.frame));
     }
 };
 struct LdRadial {
     static constexpr const char* name = "ld_radial";
-    template <class T> APSE_BENCH_INLINE static auto make(const DiskConfig<T>& d, const apse::TabulationView&) {
+    template <class T> static auto make(const DiskConfig<T>& d, const apse::TabulationView&) {
         return apse::LdRadialMap<T>(apse::project_disk(d.o, d.frame));
     }
 };
 struct Parallel {
     static constexpr const char* name = "parallel";
-    template <class T> APSE_BENCH_INLINE static auto make(const DiskConfig<T>& d, const apse::TabulationView&) {
+    template <class T> static auto make(const DiskConfig<T>& d, const apse::TabulationView&) {
         return apse::ParallelMap<T>(apse::project_disk(d.o, d.frame));
     }
 };
 struct Tabulated {
     static constexpr const char* name = "tabulated";
-    template <class T> APSE_BENCH_INLINE static auto make(const DiskConfig<T>& d, const apse::TabulationView& v) {
+    template <class T> static auto make(const DiskConfig<T>& d, const apse::TabulationView& v) {
         return apse::TabulatedMap<T>(apse::project_disk(d.o, d.frame), v);
     }
 };
 struct TabulatedLdRadial {
     static constexpr const char* name = "tabulated_ld_radial";
-    template <class T> APSE_BENCH_INLINE static auto make(const DiskConfig<T>& d, const apse::TabulationView& v) {
+    template <class T> static auto make(const DiskConfig<T>& d, const apse::TabulationView& v) {
         return apse::TabulatedLdRadialMap<T>(apse::project_disk(d.o, d.frame), v);
     }
 };
@@ -143,7 +145,7 @@ struct TabulatedLdRadial {
 // Nodes = 0: the default.
 template <class Plain, const char* Name, int Nodes = 0> struct Cosine {
     static constexpr const char* name = Name;
-    template <class T> APSE_BENCH_INLINE static auto make(const DiskConfig<T>& d, const apse::TabulationView& v) {
+    template <class T> static auto make(const DiskConfig<T>& d, const apse::TabulationView& v) {
         using Map = decltype(Plain::make(d, v));
         if constexpr (Nodes == 0) return apse::CosineWeighted<Map>(Plain::make(d, v), d.half_y);
         else return apse::CosineWeighted<Map, Nodes>(Plain::make(d, v), d.half_y);

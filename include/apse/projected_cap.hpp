@@ -83,8 +83,8 @@ template <bool Precise, class T> APSE_FUNC T asin_minus_identity(T y, T w) noexc
 /// two divisions each; 2.1 evaluations per sample on average in double, 1.3 in float, measured
 /// over random cut caps), stopped relative to the area inverted (never a fixed absolute
 /// tolerance) with a hard cap of 40 steps. Measured cost (docs/speed.md, sphere lights): through
-/// SphereLight<CosineWeighted<map>>, which builds this sampler alone, set-up + 1 sample ~4× pbrt's
-/// cone sampling above the horizon and ~10× when cut, most of the latter in the area's
+/// SphereLight<CosineWeighted<map>>, which builds this sampler alone, set-up + 1 sample ~3.3× pbrt's
+/// cone sampling above the horizon and ~9× when cut, most of the latter in the area's
 /// evaluations. The samples are continuous in u within each case; where the horizon starts
 /// to cut the cap the map changes from the disk's to the strips' (Omega_perp and the density
 /// are continuous there, the map of u is not). Every finite normal, however large or small its
