@@ -16,7 +16,7 @@
 // two sets of receivers: the cap above the horizon (…_above) and cut by it (…_cut). Every sphere
 // factory, the reference's and apse's alike, is inlined into the timed loop (APSE_BENCH_INLINE,
 // support/context.hpp), as a renderer builds its light sampler in its shading code. (The disk
-// factories are left to the compiler, as in the README's disk table, measured that way.)
+// factories are left to the compiler, as docs/speed.md's disk table was measured.)
 //
 // Cost breakdown (tools/bench_table.py's second table): <sampler>/<type>/0 is the set-up alone
 // (every field of the map kept observable), "projection" is project_disk alone and
@@ -28,7 +28,7 @@
 //                     steps (TabulatedMap, TabulatedLdRadialMap), from apse::sample_with_diagnostics
 //                     (every sampler is called through it; the counter is reported for the
 //                     samplers that count, apse::counts_iterations).
-// The JSON context records the compiler and CPU; tools/bench_table.py makes the README's table:
+// The JSON context records the compiler and CPU; tools/bench_table.py makes docs/speed.md's tables:
 //   bench_samplers --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
 //                  --benchmark_min_time=0.2 --benchmark_enable_random_interleaving=true
 //                  --benchmark_format=json > samplers.json

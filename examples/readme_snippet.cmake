@@ -1,5 +1,13 @@
-# Checks that README.md contains, word for word, the code between the "// [readme-begin]" and
-# "// [readme-end]" lines of SOURCE (so the README's example is the compiled one). -DREADME, -DSOURCE.
+# Checks that the Markdown page DOC contains, word for word, the code between the
+# "// [readme-begin]" and "// [readme-end]" lines of SOURCE, so that the code a page shows is the
+# code that is compiled and run as a test.
+#   cmake -DDOC=<page.md> -DSOURCE=<file.cpp> -P readme_snippet.cmake   (-DREADME=<page.md> also works)
+if(NOT DEFINED DOC AND DEFINED README)
+  set(DOC ${README})
+endif()
+if(NOT DEFINED DOC OR NOT DEFINED SOURCE)
+  message(FATAL_ERROR "usage: cmake -DDOC=<page.md> -DSOURCE=<file.cpp> -P readme_snippet.cmake")
+endif()
 file(READ ${SOURCE} source)
 string(FIND "${source}" "// [readme-begin]\n" begin)
 string(FIND "${source}" "// [readme-end]" end)
@@ -9,10 +17,10 @@ endif()
 math(EXPR begin "${begin} + 18")  # past the marker line
 math(EXPR length "${end} - ${begin}")
 string(SUBSTRING "${source}" ${begin} ${length} snippet)
-file(READ ${README} readme)
-string(FIND "${readme}" "${snippet}" found)
+file(READ ${DOC} doc)
+string(FIND "${doc}" "${snippet}" found)
 if(found EQUAL -1)
-  message(FATAL_ERROR "README.md does not contain the example of ${SOURCE} (between its readme markers) "
-                      "word for word: copy it into the README's \"Integrating into a renderer\" section")
+  message(FATAL_ERROR "${DOC} does not contain the example of ${SOURCE} (between its readme markers) "
+                      "word for word: copy that region into it")
 endif()
-message(STATUS "README.md contains the example of ${SOURCE}")
+message(STATUS "${DOC} contains the example of ${SOURCE}")

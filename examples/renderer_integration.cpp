@@ -1,8 +1,8 @@
 // apse inside a renderer's direct lighting: one light sample and one BSDF sample per shading
 // point, combined by multiple importance sampling (balance heuristic), with the renderer's own
 // vector type, scene data (a double radius) and sample sequence. The code between the
-// "readme" markers is the README's "Integrating into a renderer" example, word for word (the
-// test readme_integration_example checks it); main() runs it for every map and checks the
+// "readme" markers is the example of docs/integration.md, word for word (the test
+// readme_integration_example checks it); main() runs it for every map and checks the
 // estimates against the closed-form answer. Built and run as a test.
 #include <apse/apse.hpp>
 

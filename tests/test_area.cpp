@@ -5,7 +5,7 @@
 
 #include "support/map_testing.hpp"
 
-#include <catch2/catch.hpp>
+#include "support/catch.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -12,7 +12,7 @@
 #include "support/map_testing.hpp"
 #include "support/statistics.hpp"
 
-#include <catch2/catch.hpp>
+#include "support/catch.hpp"
 
 #include <algorithm>
 #include <cmath>

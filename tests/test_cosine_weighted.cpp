@@ -7,7 +7,7 @@
 // grazing, the horizon through the centre), and stratification kept. Every expected value comes
 // from quadrature over the light's area, never from the code under test.
 
-#include <catch2/catch.hpp>
+#include "support/catch.hpp"
 
 #include <apse/apse.hpp>
 

@@ -3,7 +3,7 @@
 // pathological inputs. Every test runs for float and double.
 #include <apse/elliptic.hpp>
 
-#include <catch2/catch.hpp>
+#include "support/catch.hpp"
 
 #include "support/reference_table.hpp"
 

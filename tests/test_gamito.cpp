@@ -8,7 +8,7 @@
 
 #include "support/statistics.hpp"
 
-#include <catch2/catch.hpp>
+#include "support/catch.hpp"
 
 #include <cmath>
 #include <limits>

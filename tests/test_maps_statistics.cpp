@@ -8,7 +8,7 @@
 
 #include "support/map_testing.hpp"
 
-#include <catch2/catch.hpp>
+#include "support/catch.hpp"
 
 #include <cmath>
 #include <cstdio>

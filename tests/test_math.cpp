@@ -5,7 +5,7 @@
 #include <apse/detail/polynomial_trig.hpp>
 #include <apse/detail/quadrant.hpp>
 
-#include <catch2/catch.hpp>
+#include "support/catch.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -7,7 +7,7 @@
 // geometric cases, and bad input. Every expected value comes from quadrature or a closed form over
 // the cap's geometry, never from the code under test.
 
-#include <catch2/catch.hpp>
+#include "support/catch.hpp"
 
 #include <apse/apse.hpp>
 #include <apse/projected_cap.hpp>
@@ -292,7 +292,7 @@ TEMPLATE_TEST_CASE("projected cap: pdf(sample) is the reported pdf, sample(inver
         // -ffast-math reassociates the cancellation-free forms of the horizon's height: for the
         // 1e-8 sr cap cut by the horizon with its centre below, float's cosine of the samples
         // (~1e-5) then carries ~200 eps of absolute error, not a few (measured: pdf(sample) 27x
-        // this test's rounding bound). README, Limitations: fast-math.
+        // this test's rounding bound). docs/choosing.md, Limitations: fast-math.
         if (sizeof(T) == 4 && std::string(c.name) == "tiny, cut, centre below") {
             WARN("skipped under -ffast-math: " << c.name << " in float (the horizon's height is reassociated)");
             continue;

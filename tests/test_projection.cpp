@@ -4,7 +4,7 @@
 // ray–shape intersections, disk ≡ ellipse, scale invariance, and degenerate input.
 #include <apse/projection.hpp>
 
-#include <catch2/catch.hpp>
+#include "support/catch.hpp"
 
 #include <cmath>
 #include <cstdio>

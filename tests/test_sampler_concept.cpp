@@ -1,13 +1,13 @@
-// The sampler concept (README, "The sampler concept"), checked for every sampler in float and
+// The sampler concept (docs/usage.md, "The sampler concept"), checked for every sampler in float and
 // double: what each one must provide (compile time: member functions, their return types and
 // noexcept, trivially copyable samplers and results, which samplers have invert() and
-// solid_angle() and which count iterations — the README's table), and how the members must agree
+// solid_angle() and which count iterations — the table of docs/usage.md), and how the members must agree
 // (run time): empty() false for a normal light and true for degenerate ones, pdf 0 everywhere
 // when empty, samples inside the light with pdf(sample) = the reported pdf, invert(sample(u)) = u,
 // solid_angle() against references independent of apse (mpmath table, closed form),
 // sample_with_diagnostics identical to sample, and point_on_plane's points on the light.
 
-#include <catch2/catch.hpp>
+#include "support/catch.hpp"
 
 #include <apse/apse.hpp>
 #include <apse/baselines/area.hpp>
@@ -67,7 +67,7 @@ template <class T> Scene<T> degenerate_scene(Degenerate d) {
     return s;
 }
 
-// --- the samplers: one factory each, with the README's table as constants -----------------------
+// --- the samplers: one factory each, with docs/usage.md's table as constants -----------------------
 
 template <class T> apse::SphericalEllipse<T> ellipse_of(const Scene<T>& s) { return apse::project_disk(s.o, s.c, s.n, s.r); }
 
@@ -91,7 +91,7 @@ struct Parallel {
     static constexpr Shape shape = Shape::disk;
     template <class T> static auto make(const Scene<T>& s) { return apse::ParallelMap<T>(ellipse_of(s)); }
 };
-struct Tabulated {  // no solid_angle(): the tabulated maps never compute Omega (README)
+struct Tabulated {  // no solid_angle(): the tabulated maps never compute Omega (docs/usage.md)
     static constexpr const char* name = "TabulatedMap";
     static constexpr bool invertible = true, has_solid_angle = false, counts = true;
     static constexpr Shape shape = Shape::disk;
@@ -208,9 +208,9 @@ template <class F, class T> constexpr bool static_checks() {
     static_assert(std::is_same<decltype(std::declval<const S&>().pdf(std::declval<const V3<T>&>())), T>::value,
                   "pdf(direction) -> T");
     static_assert(noexcept(std::declval<const S&>().pdf(std::declval<const V3<T>&>())), "pdf is noexcept");
-    // invert and solid_angle exactly where the README's table says
-    static_assert(has_invert<S>::value == F::invertible, "invert() where the README says");
-    static_assert(has_solid_angle<S>::value == F::has_solid_angle, "solid_angle() where the README says");
+    // invert and solid_angle exactly where docs/usage.md's table says
+    static_assert(has_invert<S>::value == F::invertible, "invert() where docs/usage.md says");
+    static_assert(has_solid_angle<S>::value == F::has_solid_angle, "solid_angle() where docs/usage.md says");
     if constexpr (F::invertible) {
         static_assert(std::is_same<decltype(std::declval<const S&>().invert(std::declval<const V3<T>&>())), V2<T>>::value,
                       "invert(direction) -> vec2");

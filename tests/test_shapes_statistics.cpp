@@ -14,7 +14,7 @@
 #include "support/cone_cells.hpp"
 #include "support/default_table.hpp"
 
-#include <catch2/catch.hpp>
+#include "support/catch.hpp"
 
 #include <cmath>
 #include <cstdio>
@@ -97,7 +97,7 @@ TEMPLATE_TEST_CASE("every shape: the cone cells cover the projected solid angle"
         const auto e = s.template project<T>();
         REQUIRE_FALSE(e.empty());
         INFO(s.name << " quadrature " << omega << " projection " << e.solid_angle());
-        // float: the solid angle is within ~1e-6 relative of the exact value (README accuracy)
+        // float: the solid angle is within ~1e-6 relative of the exact value (docs/projection.md, Accuracy)
         CHECK(std::fabs(double(e.solid_angle()) - omega) <= (sizeof(T) == 4 ? 1e-5 : 1e-9) * omega);
     }
 }

@@ -3,7 +3,7 @@
 // closed-form limits, contains(), frame transforms.
 #include <apse/spherical_ellipse.hpp>
 
-#include <catch2/catch.hpp>
+#include "support/catch.hpp"
 
 #include <cmath>
 #include <cstdio>

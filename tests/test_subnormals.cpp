@@ -8,7 +8,7 @@
 // underflow flag (C99 <fenv.h>, raised for every tiny result), so the test fails wherever any
 // operation of the set-up or of a sample underflows.
 
-#include <catch2/catch.hpp>
+#include "support/catch.hpp"
 
 #include <cfenv>
 #include <cmath>

@@ -11,7 +11,7 @@
 #include "support/default_table.hpp"
 #include "support/map_testing.hpp"
 
-#include <catch2/catch.hpp>
+#include "support/catch.hpp"
 
 #include <cmath>
 #include <cstdio>

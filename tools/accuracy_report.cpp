@@ -5,7 +5,7 @@
 //   float (promoted) — the computation in double, rounded to float,
 //   double,
 // plus the input with the largest error of the path the public float/double functions use.
-// This is the table of docs/elliptic.md (and the README).
+// This is the accuracy table of docs/elliptic.md.
 //
 //   accuracy_report [data_dir]      (default: the source tree's tests/data/elliptic)
 //

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
-# The README's sampler speed table, robust to code layout: builds bench_samplers and its three
-# layout variants (bench/CMakeLists.txt: functions aligned to 32, 64, 128 bytes) in a Release
+# The sampler speed table of docs/speed.md, robust to code layout: builds bench_samplers and its
+# three layout variants (bench/CMakeLists.txt: functions aligned to 32, 64, 128 bytes) in a Release
 # build, runs each (medians of interleaved repetitions), and prints the table of the median ratio
 # over the four layouts, their spread, and the cost breakdown (tools/bench_table.py).
 #

@@ -1,41 +1,71 @@
 #!/usr/bin/env bash
-# Builds and runs apse's whole test suite (the README's second Quick-start command; .ci/run runs
-# exactly this). Installs missing Debian packages first. Builds, each into build/<name>:
-#   release : g++, Release, all tests + consumer tests (find_package / add_subdirectory /
-#             FetchContent) + the nvcc device-compile test + benchmark smoke runs + the Mitsuba 3
-#             plugin tests (venv with the pinned wheels in build/release/mitsuba3) + the Doxygen
-#             API reference (warnings are errors)
-#   sanitize: g++, Debug, AddressSanitizer + UndefinedBehaviorSanitizer
-#   clang   : clang++, Release, plus libFuzzer runs from the committed corpora (85 s in all)
-#   fastmath: g++ -O3 -ffast-math -fno-finite-math-only: the cosine-weighted, robustness (except denormal
-#             arguments, flushed to zero), statistics and fuzz-corpus tests
-#   fma-nosimd: g++ -march=x86-64-v3 (FMA contraction on) with APSE_NO_SIMD (the scalar pairs):
-#             the whole suite
-#   aarch64 : g++-aarch64-linux-gnu cross build, run under qemu-user: every test except the
-#             statistical ones (chi-square, unbiasedness, stratification: minutes each under qemu)
-# Prints "N passed, N failed" over all builds at the end; exits non-zero on any failure.
+# Builds and runs apse's tests (the README's second Quick-start command). Installs the Debian
+# packages it misses first (timed apart from the builds). Each configuration is a CMake preset
+# (CMakePresets.json says what it builds and which CTest labels it runs), built into
+# build/<preset>:
+#   bash tools/test.sh        the quick suite, preset dev: g++ Release — the unit and statistical
+#                             tests, the examples that guard the README, the fuzz corpus replays
+#                             and the source checks (~4 minutes on 2 cores from a clean clone)
+#   bash tools/test.sh --all  the full matrix, what CI runs (.ci/run):
+#     release   : g++ Release, every test: + the build matrix (self-contained headers, GLM's
+#                 configuration macros, rejected input, -fno-exceptions), the consumer projects
+#                 (find_package / add_subdirectory / FetchContent), the nvcc device-compile test,
+#                 the Mitsuba 3 plugin tests (venv with the pinned wheels in build/release/mitsuba3),
+#                 the Doxygen API reference (warnings are errors), benchmark smoke runs
+#     sanitize  : g++ Debug, AddressSanitizer + UndefinedBehaviorSanitizer: unit tests, fuzz
+#                 replays, examples
+#     clang     : clang++ Release: unit tests, fuzz replays, libFuzzer runs from the corpora (105 s)
+#     fastmath  : g++ -O3 -ffast-math -fno-finite-math-only: robustness (except denormal
+#                 arguments, flushed to zero), statistics, cosine-weighted, fuzz replays
+#     fma-nosimd: g++ -march=x86-64-v3 (FMA contraction) with APSE_NO_SIMD (the scalar pairs):
+#                 unit tests, fuzz replays
+#     catch2-v3 : g++ Release against Catch2 3, built from Debian's source package by
+#                 tools/catch2_v3.sh (Debian 12 ships Catch2 2): unit and statistical tests
+#     aarch64   : g++-aarch64-linux-gnu cross build run under qemu-user: unit tests, fuzz replays
+# Prints configure / build / test seconds per configuration and ends with "N passed, N failed"
+# over all of them; exits non-zero on any failure. APSE_JOBS sets the parallelism (default 2).
 set -euo pipefail
 cd "$(dirname "$0")/.."
+
+all=0
+case "${1:-}" in
+  "") ;;
+  --all) all=1 ;;
+  *) echo "usage: bash tools/test.sh [--all]" >&2; exit 2 ;;
+esac
+
 . tools/deps.sh
-apse_install_deps "${APSE_BASE_PACKAGES[@]}" clang libclang-rt-14-dev libboost-math-dev \
-  g++-aarch64-linux-gnu qemu-user doxygen
-# the Mitsuba 3 tests (release build) make a venv: Debian's python3 needs python3-venv for that
-python3 -c 'import venv, ensurepip' 2>/dev/null || apse_install_deps python3 python3-venv
+t0=$(date +%s)
+# python3, python3-mpmath: the source checks; libclang-rt-14-dev: FuzzedDataProvider.h for the
+# fuzz corpus replays
+packages=("${APSE_BASE_PACKAGES[@]}" python3 python3-mpmath libclang-rt-14-dev)
+if [ "$all" -eq 1 ]; then
+  packages+=(clang libboost-math-dev g++-aarch64-linux-gnu qemu-user doxygen curl)
+fi
+apse_install_deps "${packages[@]}"
+if [ "$all" -eq 1 ]; then
+  # the Mitsuba 3 tests (release) make a venv: Debian's python3 needs python3-venv for that
+  python3 -c 'import venv, ensurepip' 2>/dev/null || apse_install_deps python3-venv
+fi
+echo "== packages checked/installed in $(( $(date +%s) - t0 )) s"
 
 jobs=${APSE_JOBS:-2}
 passed=0
 failed=0
+summary=()
 
-run_build() {  # run_build <name> <cmake args...>
-  local name=$1; shift
+run_preset() {  # run_preset <preset>: configure, build, test; adds to the totals
+  local name=$1 log="build/$1.ctest.log" t1 t2 t3 t4
+  t1=$(date +%s)
   echo "== [$name] configure"
-  cmake -S . -B "build/$name" -G Ninja -DAPSE_BUILD_EXAMPLES=ON "$@" > "build/$name.configure.log" 2>&1 \
-    || { cat "build/$name.configure.log"; return 1; }
+  cmake --preset "$name" > "build/$name.configure.log" 2>&1 || { cat "build/$name.configure.log"; return 1; }
+  t2=$(date +%s)
   echo "== [$name] build"
-  cmake --build "build/$name" -j "$jobs"
+  cmake --build --preset "$name" -j "$jobs"
+  t3=$(date +%s)
   echo "== [$name] test"
-  local log="build/$name.ctest.log"
-  (cd "build/$name" && ctest -j "$jobs" --output-on-failure) 2>&1 | tee "$log" || true
+  ctest --preset "$name" -j "$jobs" 2>&1 | tee "$log" || true
+  t4=$(date +%s)
   local line total nfail
   line=$(grep -E "tests passed, [0-9]+ tests failed out of [0-9]+" "$log" | tail -n1 || true)
   total=$(sed -E 's/.* out of ([0-9]+).*/\1/' <<<"$line")
@@ -43,32 +73,34 @@ run_build() {  # run_build <name> <cmake args...>
   if [ -z "$line" ]; then total=0; nfail=1; fi
   passed=$((passed + total - nfail))
   failed=$((failed + nfail))
+  summary+=("$(printf '%-10s configure %4d s, build %4d s, test %4d s: %d passed, %d failed' \
+    "$name" $((t2 - t1)) $((t3 - t2)) $((t4 - t3)) $((total - nfail)) "$nfail")")
   return 0
 }
 
 mkdir -p build
 start=$(date +%s)
-run_build release -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_COMPILER=g++ -DAPSE_TEST_MITSUBA=ON -DAPSE_BUILD_DOCS=ON
-cat build/release/mitsuba3/skipped.txt 2>/dev/null || true  # why the Mitsuba 3 tests were skipped
-run_build sanitize -DCMAKE_BUILD_TYPE=Debug -DCMAKE_CXX_COMPILER=g++ \
-  "-DCMAKE_CXX_FLAGS=-fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer" \
-  -DAPSE_TEST_CONSUMERS=OFF -DAPSE_TEST_CUDA=OFF -DAPSE_BUILD_BENCHMARKS=OFF
-run_build clang -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_COMPILER=clang++ -DAPSE_BUILD_FUZZERS=ON \
-  -DAPSE_TEST_CONSUMERS=OFF -DAPSE_TEST_CUDA=OFF
-run_build fastmath -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_COMPILER=g++ \
-  "-DCMAKE_CXX_FLAGS=-O3 -ffast-math -fno-finite-math-only" \
-  "-DAPSE_TEST_SPEC=[robust]~[denormals]~[extreme],[robustness],[chi2],[unbiased],[mc],[cosine]" -DAPSE_TEST_CONSUMERS=OFF \
-  -DAPSE_TEST_CUDA=OFF -DAPSE_BUILD_BENCHMARKS=OFF -DAPSE_BUILD_EXAMPLES=OFF
-if grep -qw avx2 /proc/cpuinfo && grep -qw fma /proc/cpuinfo; then
-  run_build fma-nosimd -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_COMPILER=g++ \
-    "-DCMAKE_CXX_FLAGS=-march=x86-64-v3 -ffp-contract=fast -DAPSE_NO_SIMD" -DAPSE_TEST_CONSUMERS=OFF \
-    -DAPSE_TEST_CUDA=OFF -DAPSE_BUILD_BENCHMARKS=OFF -DAPSE_BUILD_EXAMPLES=OFF
+if [ "$all" -eq 0 ]; then
+  run_preset dev
 else
-  echo "== [fma-nosimd] skipped: this CPU lacks AVX2/FMA, so -march=x86-64-v3 binaries cannot run here"
+  run_preset release
+  cat build/release/mitsuba3/skipped.txt 2>/dev/null || true  # why the Mitsuba 3 tests were skipped
+  run_preset sanitize
+  run_preset clang
+  run_preset fastmath
+  t=$(date +%s)
+  bash tools/catch2_v3.sh
+  summary+=("$(printf '%-10s built from source in %d s (tools/catch2_v3.sh)' "Catch2 3" $(( $(date +%s) - t )))")
+  run_preset catch2-v3
+  if grep -qw avx2 /proc/cpuinfo && grep -qw fma /proc/cpuinfo; then
+    run_preset fma-nosimd
+  else
+    echo "== [fma-nosimd] skipped: this CPU lacks AVX2/FMA, so -march=x86-64-v3 binaries cannot run here"
+  fi
+  run_preset aarch64
 fi
-run_build aarch64 -DCMAKE_BUILD_TYPE=Release -DCMAKE_TOOLCHAIN_FILE=cmake/aarch64-linux-gnu.cmake \
-  "-DAPSE_TEST_SPEC=~[chi2]~[unbiased]~[mc]~[stratification]" -DAPSE_TEST_CONSUMERS=OFF \
-  -DAPSE_TEST_CUDA=OFF -DAPSE_BUILD_BENCHMARKS=OFF -DAPSE_BUILD_EXAMPLES=OFF
+echo "== per configuration:"
+printf '   %s\n' "${summary[@]}"
 echo "== all builds done in $(( $(date +%s) - start )) s"
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]

@@ -23,10 +23,12 @@ Canvas comparison_figure(const std::vector<Panel>& panels, int columns, glm::vec
     const int W = panels.front().picture.width, H = panels.front().picture.height;
     const int w = W / 2, h = H / 2;
     const int iw = w / zoom * 1, ih = h / zoom * 1;  // region size in full-resolution pixels
-    const int cell_w = w + 2 + iw * zoom, pad = 8, label_h = 22, title_h = 24;
+    const int cell_w = w + 2 + iw * zoom, pad = 8, label_h = 22, title_h = 36;
     const int rows = (static_cast<int>(panels.size()) + columns - 1) / columns;
     Canvas fig(columns * (cell_w + pad) + pad, title_h + rows * (h + label_h + pad) + pad, rgb8(255));
     fig.text(pad, 6, title, rgb8(0), 2);
+    fig.text(pad, 24, "Right half of each panel: the white box at full resolution enlarged " + std::to_string(zoom) +
+                          "x (left half: every second pixel)", rgb8(70), 1);
     const int sx = std::clamp(static_cast<int>(inset.x * static_cast<float>(W)) - iw / 2, 0, W - iw);
     const int sy = std::clamp(static_cast<int>(inset.y * static_cast<float>(H)) - ih / 2, 0, H - ih);
     for (std::size_t k = 0; k < panels.size(); ++k) {

@@ -3,8 +3,8 @@
 at equal samples (16 spp) and at equal time (the time of Mitsuba's light at 64 spp), against a high-spp reference; writes PNG
 comparisons and a Markdown table (relMSE, time, efficiency), printing one progress line per render.
 
-    python3 tools/mitsuba3_test.py setup            # venv + wheels + plugin in build/mitsuba3
-    build/mitsuba3/venv/bin/python examples/mitsuba3/compare.py --out build/mitsuba3/compare
+    python3 tools/mitsuba3_test.py setup --dir build/release/mitsuba3   # venv + wheels + plugin (as the tests)
+    build/release/mitsuba3/venv/bin/python examples/mitsuba3/compare.py --out build/release/mitsuba3/compare
 
 relMSE = mean over pixels of (I - R)^2 / (R^2 + 0.01 mean(R)^2) on the RGB average, as the demo;
 time = CPU time of mi.render, all its threads summed (the smallest of --repeats runs: CPU time
@@ -17,6 +17,7 @@ that the error measures light sampling, not the anti-aliasing of the lights' sil
 import argparse
 import math
 import os
+import re
 import sys
 import time
 
@@ -31,6 +32,27 @@ import scenes  # noqa: E402
 LABELS = {"mitsuba": "Mitsuba area", "area": "apse_disk area", "radial": "radial",
           "ld_radial": "LD-radial", "parallel": "parallel", "tabulated_ld_radial": "tabulated LD-radial",
           "cosine_ld_radial": "cosine LD-radial", "cosine_tabulated_ld_radial": "cosine tabulated LD-radial"}
+
+
+def load_font():
+    """The demo's 5x7 bitmap font (examples/demo/font.hpp): {character: 7x5 boolean array}."""
+    with open(os.path.join(HERE, "..", "demo", "font.hpp")) as f:
+        glyphs = re.findall(r"\{'(.)', \"([.#]{35})\"\}", f.read())
+    return {c: np.array([ch == "#" for ch in rows]).reshape(7, 5) for c, rows in glyphs}
+
+
+def text_band(lines, width, font, height=22):
+    """A white band `height` pixels high and `width` wide with up to two lines of black text
+    (the demo's font: lower case drawn as upper case, except x)."""
+    band = np.ones((height, width), np.float32)
+    for k, line in enumerate(lines[:2]):
+        x, y = 2, 2 + 10 * k
+        for ch in line:
+            g = font.get(ch if ch == "x" else ch.upper())
+            if g is not None and x + 5 <= width:
+                band[y:y + 7, x:x + 5][g] = 0.0
+            x += 6
+    return band
 
 
 def rel_mse(img, ref):
@@ -56,9 +78,9 @@ def nearest_square(x):
 
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    ap.add_argument("--out", default=os.path.join(HERE, "..", "..", "build", "mitsuba3", "compare"))
-    ap.add_argument("--plugins", default=os.path.join(HERE, "..", "..", "build", "mitsuba3", "plugin"),
-                    help="directory holding plugins/apse_disk.so")
+    ap.add_argument("--out", default=os.path.join(HERE, "..", "..", "build", "release", "mitsuba3", "compare"))
+    ap.add_argument("--plugins", default=os.path.join(HERE, "..", "..", "build", "release", "mitsuba3", "plugin"),
+                    help="directory holding plugins/apse_disk.so (tools/mitsuba3_test.py setup --dir D: D/plugin)")
     ap.add_argument("--width", type=int, default=160)
     ap.add_argument("--height", type=int, default=120)
     ap.add_argument("--spp", type=int, default=16)
@@ -76,6 +98,7 @@ def main():
     total = len(names) * (1 + 2 * len(lights))
     done = 0
     md = []
+    font = load_font()
 
     def progress(msg):
         nonlocal done
@@ -108,14 +131,20 @@ def main():
             progress("%-7s %-26s %4d spp (equal time): %6.3f s, relMSE %.3e" % (name, LABELS[light], spp, t,
                                                                               rows[light]["time_e"]))
 
-        # pictures: reference, then every light; top row equal samples, bottom row equal time.
-        # Grey scale (every colour in the scenes is grey), exposed so that the reference's 99th
-        # percentile is white.
-        grey = lambda img: img.mean(axis=2, keepdims=True)
+        # pictures: reference, then every light; top row equal samples, bottom row equal time,
+        # each picture under its sampler's name, sample count and relMSE. Grey scale (every
+        # colour in the scenes is grey), exposed so that the reference's 99th percentile is white.
+        grey = lambda img: img.mean(axis=2)
         exposure = 1.0 / max(float(np.quantile(grey(ref), 0.99)), 1e-6)
-        top = np.concatenate([grey(ref)] + [grey(rows[l]["spp_img"]) for l in lights], axis=1)
-        bottom = np.concatenate([np.zeros_like(grey(ref))] + [grey(rows[l]["time_img"]) for l in lights], axis=1)
-        picture = np.clip(exposure * np.concatenate([top, bottom], axis=0), 0, 1).astype(np.float32)
+        shown = lambda img: np.clip(exposure * grey(img), 0, 1)
+        w = ref.shape[1]
+        top = [(shown(ref), ["reference", "%d spp" % a.ref_spp])]
+        top += [(shown(rows[l]["spp_img"]), [LABELS[l], "%d spp relMSE %.2e" % (a.spp, rows[l]["e"])]) for l in lights]
+        bottom = [(np.ones_like(grey(ref)), ["equal time:", "as Mitsuba at %d spp" % a.time_spp])]
+        bottom += [(shown(rows[l]["time_img"]), [LABELS[l], "%d spp relMSE %.2e" % (rows[l]["time_spp"], rows[l]["time_e"])])
+                   for l in lights]
+        strip = lambda row: np.concatenate([np.concatenate([text_band(t, w, font), img], axis=0) for img, t in row], axis=1)
+        picture = np.concatenate([strip(top), strip(bottom)], axis=0).astype(np.float32)[:, :, None]
         mi.Bitmap(picture, mi.Bitmap.PixelFormat.Y).convert(
             mi.Bitmap.PixelFormat.Y, mi.Struct.Type.UInt8, srgb_gamma=True).write(
             os.path.join(a.out, "%s_comparison.png" % name))

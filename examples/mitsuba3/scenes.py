@@ -7,6 +7,11 @@
     spheres : the authors' scene: three diffuse spheres of radius 2 on a plane, a two-sided disk
               light of radius 3 at (1, 3, 4) (`path`); seen from the side, because Mitsuba's
               lights are visible to camera rays and the demo's viewpoint looks through the light
+    room    : a realistic case rather than a best one: a closed diffuse room (floor, ceiling,
+              three walls and the wall behind the camera), a glossy sphere (rough plastic), a
+              diffuse sphere and a close disk light tilted towards them, path traced to depth 4
+              (three bounces: most of the picture is lit indirectly, and the glossy sphere's
+              highlights come from BSDF samples)
 
 Every light is a `disk` shape with a black BSDF (it only emits), two-sided by default as in the
 demo, carrying apse's `apse_disk` emitter with the named sampler ("area" is uniform sampling by
@@ -20,7 +25,7 @@ import math
 
 import mitsuba as mi
 
-SCENES = ("plane", "medium", "spheres")
+SCENES = ("plane", "medium", "spheres", "room")
 APSE_SAMPLERS = ("radial", "ld_radial", "parallel", "tabulated_ld_radial", "cosine_ld_radial",
                  "cosine_tabulated_ld_radial")
 LIGHTS = ("mitsuba", "area") + APSE_SAMPLERS
@@ -109,6 +114,27 @@ def scene_dict(name, light, width=128, height=96, spp=16, sampler="stratified", 
              **_disks([1.0, 3.0, 4.0], [0.0, -1.0, -1.0], 3.0, 1.5, light, twosided, standalone, aspect)}
         for i, c in enumerate(([-4.0, 2.0, -0.5], [1.0, 2.0, -3.0], [6.0, 2.0, -0.5])):
             d["sphere%d" % i] = {"type": "sphere", "center": c, "radius": 2.0, "bsdf": diffuse}
+    elif name == "room":
+        grey = {"type": "diffuse", "reflectance": {"type": "rgb", "value": 0.6}}
+        d = {"type": "scene",
+             "integrator": _integrator(integrator or "path", 4),
+             "sensor": _camera([0.0, 1.3, 3.6], [0.0, 0.8, 0.0], 55, width, height, spp, sampler, seed),
+             **_disks([-0.7, 1.7, 0.3], [0.5, -1.0, -0.2], 0.45, 8.0, light, twosided, standalone, aspect)}
+        # the room [-2, 2] x [0, 2.5] x [-2, 4]: six rectangles (Mitsuba's: [-1, 1]^2 in z = 0, facing
+        # +z) facing inwards: (centre, rotation, half extents)
+        walls = {"floor": ([0.0, 0.0, 1.0], T().rotate([1, 0, 0], -90), [2.0, 3.0]),
+                 "ceiling": ([0.0, 2.5, 1.0], T().rotate([1, 0, 0], 90), [2.0, 3.0]),
+                 "back": ([0.0, 1.25, -2.0], T(), [2.0, 1.25]),
+                 "front": ([0.0, 1.25, 4.0], T().rotate([0, 1, 0], 180), [2.0, 1.25]),
+                 "left": ([-2.0, 1.25, 1.0], T().rotate([0, 1, 0], 90), [3.0, 1.25]),
+                 "right": ([2.0, 1.25, 1.0], T().rotate([0, 1, 0], -90), [3.0, 1.25])}
+        for key, (center, rotation, half) in walls.items():
+            d[key] = {"type": "rectangle", "bsdf": grey,
+                      "to_world": T().translate(center) @ rotation @ T().scale([half[0], half[1], 1.0])}
+        d["glossy"] = {"type": "sphere", "center": [0.45, 0.55, -0.3], "radius": 0.55,
+                       "bsdf": {"type": "roughplastic", "distribution": "ggx", "alpha": 0.08,
+                                "diffuse_reflectance": {"type": "rgb", "value": 0.15}}}
+        d["ball"] = {"type": "sphere", "center": [-0.6, 0.35, 0.5], "radius": 0.35, "bsdf": grey}
     else:
         raise ValueError("unknown scene " + name)
     if hide_emitters:

@@ -1,6 +1,7 @@
 // Compiles every public apse function into a __global__ kernel (nvcc, compile + link only: no
-// GPU is needed). Each section calls one header's functions in float and double; when a header
-// gains a public function, add the call here.
+// GPU is needed). Each section calls one header's functions, in the type APSE_DEVICE_CALLS_REAL
+// (float or double, one per compilation; see main()); when a header gains a public function, add
+// the call here.
 #include <apse/apse.hpp>
 #include <apse/baselines/area.hpp>
 #include <apse/baselines/gamito.hpp>
@@ -273,25 +274,23 @@ __global__ void all_public_functions(const T* in, T* out, int n) {
     out[i] = baseline_rectangle_gamito_calls(a) + math_calls(a) + elliptic_calls(a);
 }
 
+// The kernels of one type per compilation (float or double: the test suite compiles both, in
+// parallel, as cuda_device_compile_float and cuda_device_compile_double).
+#ifndef APSE_DEVICE_CALLS_REAL
+#define APSE_DEVICE_CALLS_REAL float
+#endif
+using Real = APSE_DEVICE_CALLS_REAL;
+
 int main() {
     // Taking the kernels' addresses forces their instantiation and device compilation.
-    void (*kf)(const float*, float*, int) = all_public_functions<float>;
-    void (*kd)(const double*, double*, int) = all_public_functions<double>;
-    void (*mf)(const float*, float*, int) = maps_disk_light_kernel<float>;
-    void (*md)(const double*, double*, int) = maps_disk_light_kernel<double>;
-    void (*pf)(const float*, float*, int) = projection_kernel<float>;
-    void (*pd)(const double*, double*, int) = projection_kernel<double>;
-    void (*tf)(const float*, float*, float*, int) = tabulated_kernel<float>;
-    void (*td)(const double*, double*, float*, int) = tabulated_kernel<double>;
-    void (*cf)(const float*, float*, float*, int) = cosine_kernel<float>;
-    void (*cd)(const double*, double*, float*, int) = cosine_kernel<double>;
-    void (*sf)(const float*, float*, float*, int) = sphere_kernel<float>;
-    void (*sd)(const double*, double*, float*, int) = sphere_kernel<double>;
-    std::printf("tabulated kernels compiled: %p %p\n", reinterpret_cast<void*>(tf), reinterpret_cast<void*>(td));
-    std::printf("cosine-weighted kernels compiled: %p %p\n", reinterpret_cast<void*>(cf), reinterpret_cast<void*>(cd));
-    std::printf("sphere-light kernels compiled: %p %p\n", reinterpret_cast<void*>(sf), reinterpret_cast<void*>(sd));
-    std::printf("device kernels compiled: %p %p %p %p %p %p\n", reinterpret_cast<void*>(kf),
-                reinterpret_cast<void*>(kd), reinterpret_cast<void*>(mf), reinterpret_cast<void*>(md),
-                reinterpret_cast<void*>(pf), reinterpret_cast<void*>(pd));
+    void (*k)(const Real*, Real*, int) = all_public_functions<Real>;
+    void (*m)(const Real*, Real*, int) = maps_disk_light_kernel<Real>;
+    void (*p)(const Real*, Real*, int) = projection_kernel<Real>;
+    void (*t)(const Real*, Real*, float*, int) = tabulated_kernel<Real>;
+    void (*c)(const Real*, Real*, float*, int) = cosine_kernel<Real>;
+    void (*s)(const Real*, Real*, float*, int) = sphere_kernel<Real>;
+    std::printf("device kernels compiled (%s): %p %p %p %p %p %p\n", sizeof(Real) == 4 ? "float" : "double",
+                reinterpret_cast<void*>(k), reinterpret_cast<void*>(m), reinterpret_cast<void*>(p),
+                reinterpret_cast<void*>(t), reinterpret_cast<void*>(c), reinterpret_cast<void*>(s));
     return 0;
 }

@@ -3,7 +3,7 @@
 // Everything here is independent of apse (no apse header is used), so it can serve as a reference.
 #pragma once
 
-#include <catch2/catch.hpp>
+#include "support/catch.hpp"
 
 #include <algorithm>
 #include <cmath>
