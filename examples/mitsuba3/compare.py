@@ -150,20 +150,22 @@ def main():
             os.path.join(a.out, "%s_comparison.png" % name))
 
         base = rows["mitsuba"]
-        eff0 = 1.0 / (base["e"] * base["t"])
+        eff = lambda r: 1.0 / (r["e"] * r["t"])
         md.append("#### %s\n" % name)
         md.append("| sampler | relMSE, %d spp | vs Mitsuba | CPU time (s) | efficiency vs Mitsuba | "
-                  "equal time: spp | CPU time (s) | relMSE | vs Mitsuba |" % a.spp)
-        md.append("|---|---|---|---|---|---|---|---|---|")
+                  "efficiency vs apse_disk area | equal time: spp | CPU time (s) | relMSE | vs Mitsuba |" % a.spp)
+        md.append("|---|---|---|---|---|---|---|---|---|---|")
         for l in lights:
             r = rows[l]
-            md.append("| %s | %.3e | %.3g | %.3f | %.2f | %d | %.3f | %.3e | %.3g |"
-                      % (LABELS[l], r["e"], r["e"] / base["e"], r["t"], 1.0 / (r["e"] * r["t"]) / eff0,
+            md.append("| %s | %.3e | %.3g | %.3f | %.2f | %.2f | %d | %.3f | %.3e | %.3g |"
+                      % (LABELS[l], r["e"], r["e"] / base["e"], r["t"], eff(r) / eff(base), eff(r) / eff(rows["area"]),
                          r["time_spp"], r["time_t"], r["time_e"], r["time_e"] / base["time_e"]))
         md.append("")
 
     md.append("%dx%d pixels, `stratified` sampler, reference: cosine tabulated LD-radial at %d spp (another seed); "
-              "time: CPU time of mi.render (threads summed), smallest of %d runs." % (a.width, a.height, a.ref_spp, a.repeats))
+              "time: CPU time of mi.render (threads summed), smallest of %d runs; efficiency = 1/(relMSE time); "
+              "apse_disk area: the same area sampling as Mitsuba's light, of one two-sided disk (Mitsuba's is two "
+              "back-to-back one-sided disks)." % (a.width, a.height, a.ref_spp, a.repeats))
     text = "\n".join(md)
     with open(os.path.join(a.out, "results.md"), "w") as f:
         f.write(text + "\n")
