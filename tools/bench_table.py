@@ -30,11 +30,48 @@ benchmark names:
 
 Uses the "median" aggregates when repetitions were run, the plain runs otherwise. The header
 states the CPU and compiler recorded in the JSON context. Only the standard library is needed.
+
+With --into PAGE the tables are written into the markdown page instead of printed: each section
+(disks: the disk table and its spread; breakdown: the cost breakdown; spheres: the sphere-light
+table; elliptic: the elliptic-integral table) replaces what stands between the page's lines
+`<!-- bench_table.py: NAME -->` and `<!-- /bench_table.py: NAME -->`, so that a measured table
+lives in one place and is never copied by hand:
+
+    python3 tools/bench_table.py --into docs/speed.md samplers.json
+    python3 tools/bench_table.py --into docs/elliptic.md elliptic.json
 """
 
+import contextlib
+import io
 import json
 import re
 import sys
+
+SECTIONS = {}  # section name -> its markdown, when written --into a page
+
+
+@contextlib.contextmanager
+def section(name):
+    """Collects what is printed inside into SECTIONS[name] (and prints it unless --into)."""
+    buf = io.StringIO()
+    with contextlib.redirect_stdout(buf):
+        yield
+    SECTIONS[name] = buf.getvalue()
+
+
+def write_into(page):
+    """Replaces each collected section of `page` between its markers (an error if one is missing)."""
+    with open(page) as f:
+        text = f.read()
+    for name, body in SECTIONS.items():
+        begin, end = '<!-- bench_table.py: %s -->\n' % name, '<!-- /bench_table.py: %s -->' % name
+        i, j = text.find(begin), text.find(end)
+        if i < 0 or j < i:
+            sys.exit('%s: no %s ... %s markers' % (page, begin.strip(), end))
+        text = text[:i + len(begin)] + '\n' + body.strip('\n') + '\n\n' + text[j:]
+        print('%s: section %s written' % (page, name), file=sys.stderr)
+    with open(page, 'w') as f:
+        f.write(text)
 
 # benchmark name prefix -> column title
 PEERS = [
@@ -190,26 +227,31 @@ def samplers_table(datas):
     extra = ''
     if len(datas) > 1:
         extra = '; median over %d code layouts (%s)' % (len(datas), ', '.join(layout_name(d) for d in datas))
-    print(header(datas[0].get('context', {}), have_median, reps, extra))
-    print()
+    head = header(datas[0].get('context', {}), have_median, reps, extra)
     disk_keys = {k for k in keys if not k[0].startswith('sphere_')}
     sphere_keys = keys - disk_keys
     if disk_keys:
-        ratio_table(layouts, disk_keys, times, ratios, SAMPLERS, len(datas),
-                    'Per fresh shading point: set-up (projection + map, or the baseline\'s own) + 1 or 16 '
-                    'samples, 1024 seeded unit disks 0.1–1000 radii away (log-uniform), all orientations, '
-                    'the same points of the square for every sampler. Ratio = median time / median time of '
-                    'DiskAreaSampler in the same run (> 1: slower than area sampling)')
-        breakdown_table(times, ratios)
+        with section('disks'):
+            print(head)
+            print()
+            ratio_table(layouts, disk_keys, times, ratios, SAMPLERS, len(datas),
+                        'Per fresh shading point: set-up (projection + map, or the baseline\'s own) + 1 or 16 '
+                        'samples, 1024 seeded unit disks 0.1–1000 radii away (log-uniform), all orientations, '
+                        'the same points of the square for every sampler. Ratio = median time / median time of '
+                        'DiskAreaSampler in the same run (> 1: slower than area sampling)')
+        with section('breakdown'):
+            breakdown_table(times, ratios)
     if sphere_keys:
-        print()
-        ratio_table(layouts, sphere_keys, times, ratios, SPHERES, len(datas),
-                    'Sphere lights, per fresh shading point: set-up (project_sphere + map; the cone '
-                    'sampler\'s own) + 1 or 16 samples, 1024 seeded unit spheres 1.05–50 radii away '
-                    '(log-uniform); the cosine-weighted rows for receivers that see the cap above their '
-                    'horizon or cut by it. Ratio = median time / median time of pbrt-v4\'s cone sampling '
-                    'in the same run (the SphereLight rows: of cone sampling with the point and distance; '
-                    '> 1: slower)')
+        with section('spheres'):
+            print(head)
+            print()
+            ratio_table(layouts, sphere_keys, times, ratios, SPHERES, len(datas),
+                        'Sphere lights, per fresh shading point: set-up (project_sphere + map; the cone '
+                        'sampler\'s own) + 1 or 16 samples, 1024 seeded unit spheres 1.05–50 radii away '
+                        '(log-uniform); the cosine-weighted rows for receivers that see the cap above their '
+                        'horizon or cut by it. Ratio = median time / median time of pbrt-v4\'s cone sampling '
+                        'in the same run (the SphereLight rows: of cone sampling with the point and distance; '
+                        '> 1: slower)')
 
 
 def ratio_table(layouts, keys, times, ratios, titles, n_layouts, note):
@@ -314,11 +356,30 @@ def load(data):
 
 
 def main():
-    datas = [json.load(open(f)) for f in sys.argv[1:]] or [json.load(sys.stdin)]
+    args = sys.argv[1:]
+    page = None
+    if args[:1] == ['--into']:
+        if len(args) < 2:
+            sys.exit('usage: bench_table.py [--into PAGE] [JSON...]')
+        page, args = args[1], args[2:]
+    datas = [json.load(open(f)) for f in args] or [json.load(sys.stdin)]
+    tables(datas)
+    if page:
+        write_into(page)
+    else:
+        print('\n\n'.join(body.strip('\n') for body in SECTIONS.values()))
+
+
+def tables(datas):
     data = datas[0]
     if any(SAMPLER_NAME.match(b.get('run_name', b['name'])) for b in data.get('benchmarks', [])):
         samplers_table(datas)
         return
+    with section('elliptic'):
+        elliptic_table(data)
+
+
+def elliptic_table(data):
     ctx, times, have_median = load(data)
     cpu = ctx.get('cpu_model', 'unknown CPU')
     print('%s (%s CPUs, %s MHz), %s; %s; Boost %s; %s of %s.' % (
