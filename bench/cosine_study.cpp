@@ -12,7 +12,9 @@
 //   3. with `demo`: the demo's plane-scene pixels (the ground points its camera sees through the
 //      pixel centres), jittered points against the demo's own scrambled Sobol' points, split by
 //      the distance to the light — why the demo's gain differs from the receiver grid's.
-// Usage: cosine_study [trials] [demo]   (default 8 trials per receiver)
+// Usage: cosine_study [--into PAGE] [trials] [demo]   (default 8 trials per receiver; --into
+// docs/cosine_weighted.md writes the tables there, between the page's cosine_study markers:
+// sections receivers and straddling, or demo)
 
 #include <cmath>
 #include <cstdio>
@@ -24,8 +26,11 @@
 #include <apse/apse.hpp>
 
 #include "../examples/demo/points.hpp"  // the demo's per-pixel points
+#include "../tools/doc_report.hpp"
 
 namespace {
+
+apse_tools::DocReport report("cosine_study");  // what the study prints
 
 using dvec2 = glm::dvec2;
 using dvec3 = glm::dvec3;
@@ -200,7 +205,7 @@ template <class Make>
 void row(const char* name, const std::vector<Receiver>& plane, const Light& Lp, const std::vector<Receiver>& strad,
          const Light& Ls, int trials, double base_plane, double base_strad, Make make) {
     const Result a = run(plane, Lp, trials, make), b = run(strad, Ls, trials, make);
-    std::printf("| %s | %.3e | %.1f | %.3e | %.1f | %.2f %% | %.2f %% |\n", name, a.relmse, base_plane / a.relmse, b.relmse,
+    report.printf("| %s | %.3e | %.1f | %.3e | %.1f | %.2f %% | %.2f %% |\n", name, a.relmse, base_plane / a.relmse, b.relmse,
                 base_strad / b.relmse, 100.0 * b.below, 100.0 * b.none);
 }
 
@@ -253,7 +258,8 @@ template <class T> void demo_analysis(const Light& L, int trials, bool sobol) {
 
 /// The demo metric over the demo's pixels with both point sets.
 template <class Make>
-void demo_row(const std::vector<Receiver>& rs, int pixels, const Light& L, int trials, const char* name, Make make) {
+double demo_row(const std::vector<Receiver>& rs, int pixels, const Light& L, int trials, const char* name,
+                double plain_sobol, Make make) {
     double mean = 0.0;
     for (const Receiver& r : rs) mean += r.ref;
     mean /= pixels;
@@ -262,12 +268,21 @@ void demo_row(const std::vector<Receiver>& rs, int pixels, const Light& L, int t
         const std::vector<double> se = squared_errors(rs, L, trials, k == 1, make);
         for (std::size_t i = 0; i < rs.size(); ++i) e[k] += se[i] / (rs[i].ref * rs[i].ref + 0.01 * mean * mean);
     }
-    std::printf("| %s | %.3e | %.3e |\n", name, e[0] / pixels, e[1] / pixels);
+    const double sobol = e[1] / pixels;
+    report.printf("| %s | %.3e | %.3e | %.1f |\n", name, e[0] / pixels, sobol,
+                  plain_sobol > 0.0 ? plain_sobol / sobol : 1.0);
+    return sobol;
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
+    std::string page;
+    if (argc > 2 && std::string(argv[1]) == "--into") {
+        page = argv[2];
+        argv += 2;
+        argc -= 2;
+    }
     const int trials = argc > 1 ? std::atoi(argv[1]) : 8;
     using namespace apse;
     const Light Lp{dvec3(0.0, 1.05, 0.0), glm::normalize(dvec3(1.0, 0.0, 0.35)), 1.0};
@@ -298,24 +313,30 @@ int main(int argc, char** argv) {
         strad.push_back({p, n, quadrature(p, n, Ls, 1000)});
     }
     if (argc > 2 && std::string(argv[2]) == "demo") {
-        demo_analysis<double>(Lp, trials, false);
+        demo_analysis<double>(Lp, trials, false);  // printed on the console
         demo_analysis<double>(Lp, trials, true);
         demo_analysis<float>(Lp, trials, true);
         int pixels = 0;
         const std::vector<Receiver> rs = demo_pixels(Lp, pixels);
-        std::printf("\n| demo pixels, relMSE (demo metric) | jittered | scrambled Sobol' |\n|---|---:|---:|\n");
-        demo_row(rs, pixels, Lp, trials, "TabulatedLdRadialMap", PlainTab<TabulatedLdRadialMap<double>>{});
-        demo_row(rs, pixels, Lp, trials, "CW<TabulatedLdRadial>, 8 nodes", CosTab<TabulatedLdRadialMap<double>, 8>{});
-        demo_row(rs, pixels, Lp, trials, "CW<TabulatedLdRadial>, 16 nodes", CosTab<TabulatedLdRadialMap<double>, 16>{});
-        demo_row(rs, pixels, Lp, trials, "CW<TabulatedLdRadial>, 32 nodes", CosTab<TabulatedLdRadialMap<double>, 32>{});
-        return 0;
+        report.section("demo");
+        report.printf("%d trials per pixel.\n\n", trials);
+        report.printf("| demo pixels, relMSE (demo metric) | jittered 4 × 4 | scrambled Sobol' | plain / this (Sobol') |\n"
+                      "|---|---:|---:|---:|\n");
+        const double plain =
+            demo_row(rs, pixels, Lp, trials, "TabulatedLdRadialMap", 0.0, PlainTab<TabulatedLdRadialMap<double>>{});
+        demo_row(rs, pixels, Lp, trials, "CW<TabulatedLdRadial>, 8 nodes", plain, CosTab<TabulatedLdRadialMap<double>, 8>{});
+        demo_row(rs, pixels, Lp, trials, "CW<TabulatedLdRadial>, 16 nodes", plain, CosTab<TabulatedLdRadialMap<double>, 16>{});
+        demo_row(rs, pixels, Lp, trials, "CW<TabulatedLdRadial>, 32 nodes", plain, CosTab<TabulatedLdRadialMap<double>, 32>{});
+        return report.finish(page);
     }
+    report.section("receivers");
+    report.printf("%d trials per receiver.\n", trials);
     int centre_above = 0;  // the straddling receivers whose horizon leaves the disk's centre above it
     for (const Receiver& r : strad) centre_above += glm::dot(r.n, Ls.c - r.p) > 0.0 ? 1 : 0;
-    std::printf("straddling receivers with the light's centre above the horizon: %d of %zu\n\n", centre_above, strad.size());
+    report.printf("straddling receivers with the light's centre above the horizon: %d of %zu\n\n", centre_above, strad.size());
     const Result bp = run(plane, Lp, trials, Plain<LdRadialMap<double>>{});
     const Result bs = run(strad, Ls, trials, Plain<LdRadialMap<double>>{});
-    std::printf("| sampler | plane relMSE | plane: plain LD-radial / this | straddling relMSE | straddling: "
+    report.printf("| sampler | plane relMSE | plane: plain LD-radial / this | straddling relMSE | straddling: "
                 "plain LD-radial / this | straddling: samples below the horizon | straddling: samples with pdf 0 "
                 "|\n|---|---:|---:|---:|---:|---:|---:|\n");
     const double a = bp.relmse, b = bs.relmse;
@@ -341,15 +362,16 @@ int main(int argc, char** argv) {
     // tabulated maps' warp serves the first, the exact sampler both)
     std::vector<Receiver> above, below;
     for (const Receiver& r : strad) (glm::dot(r.n, Ls.c - r.p) > 0.0 ? above : below).push_back(r);
-    std::printf("\n| straddling receivers | plain LD-radial relMSE | CW<LdRadial> (exact sampler) | ratio | "
+    report.section("straddling");
+    report.printf("| straddling receivers | plain LD-radial relMSE | CW<LdRadial> (exact sampler) | ratio | "
                 "CW<TabulatedLdRadial> | ratio |\n|---|---:|---:|---:|---:|---:|\n");
     for (int k = 0; k < 2; ++k) {
         const std::vector<Receiver>& set = k == 0 ? above : below;
         const double p0 = run(set, Ls, trials, Plain<LdRadialMap<double>>{}).relmse;
         const double p1 = run(set, Ls, trials, Cos<LdRadialMap<double>, 8>{}).relmse;
         const double p2 = run(set, Ls, trials, CosTab<TabulatedLdRadialMap<double>, 8>{}).relmse;
-        std::printf("| centre %s the horizon (%zu) | %.3e | %.3e | %.1f | %.3e | %.1f |\n", k == 0 ? "above" : "below", set.size(),
+        report.printf("| centre %s the horizon (%zu) | %.3e | %.3e | %.1f | %.3e | %.1f |\n", k == 0 ? "above" : "below", set.size(),
                     p0, p1, p0 / p1, p2, p0 / p2);
     }
-    return 0;
+    return report.finish(page);
 }

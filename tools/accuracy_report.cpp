@@ -14,15 +14,13 @@
 // the measured error is the library's own error (the reference's is ~1e-30).
 #include <apse/elliptic.hpp>
 
+#include "doc_report.hpp"
 #include "support/reference_table.hpp"
 
 #include <cmath>
-#include <cstdarg>
 #include <cstdio>
 #include <cstdlib>
-#include <fstream>
 #include <functional>
-#include <sstream>
 #include <string>
 #include <vector>
 
@@ -119,32 +117,6 @@ std::string fmt_input(const std::vector<double>& in) {
     return s + ")";
 }
 
-// The report, printed or written --into a page.
-std::string report;
-void emit(const char* format, ...) {
-    char buf[1024];
-    va_list args;
-    va_start(args, format);
-    std::vsnprintf(buf, sizeof buf, format, args);
-    va_end(args);
-    report += buf;
-}
-
-// Replaces what stands between the page's markers with the report; false if they are missing.
-bool write_into(const std::string& page) {
-    std::ifstream in(page);
-    std::stringstream text;
-    text << in.rdbuf();
-    std::string s = text.str();
-    const std::string begin = "<!-- accuracy_report: elliptic -->\n", end = "<!-- /accuracy_report: elliptic -->";
-    const std::size_t i = s.find(begin), j = s.find(end);
-    if (!in || i == std::string::npos || j == std::string::npos || j < i) return false;
-    s = s.substr(0, i + begin.size()) + "\n" + report + "\n" + s.substr(j);
-    std::ofstream out(page);
-    out << s;
-    return bool(out);
-}
-
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -157,6 +129,8 @@ int main(int argc, char** argv) {
     const std::string dir = argc > arg ? argv[arg] : std::string(APSE_TEST_DATA_DIR) + "/elliptic";
     // the data directory as the page names it: relative to the source tree where it is the default
     const std::string shown = argc > arg ? dir : std::string("tests/data/elliptic");
+    apse_tools::DocReport report("accuracy_report");
+    report.section("elliptic");
     const Function functions[] = {
         {"carlson_rf", 3, 4, APSE_PATHS(rf_impl, 3)},
         {"carlson_rd", 3, 8, APSE_PATHS(rd_impl, 3)},
@@ -168,16 +142,16 @@ int main(int argc, char** argv) {
         {"comp_ellint_pi", 2, 16, APSE_PATHS(comp_pi_impl, 2)},
     };
     const long double eps_f = 0x1p-23L, eps_d = 0x1p-52L;
-    emit("Relative error in units of eps (float: 2^-23, double: 2^-52), max / mean over the "
+    report.printf("Relative error in units of eps (float: 2^-23, double: 2^-52), max / mean over the "
          "rows of %s/*.csv.\n\n", shown.c_str());
-    emit("| function | rows | budget | float native | float promoted | double | "
+    report.printf("| function | rows | budget | float native | float promoted | double | "
          "worst float input | worst double input |\n");
-    emit("|---|---:|---:|---:|---:|---:|---|---|\n");
+    report.printf("|---|---:|---:|---:|---:|---:|---|---|\n");
     bool ok = true;
     for (const Function& f : functions) {
         const std::vector<Row> rows = read_table(dir + "/" + f.name + ".csv", f.n_in);
         if (rows.empty()) {
-            emit("| %s | 0 | (missing table) |||||\n", f.name);
+            report.printf("| %s | 0 | (missing table) |||||\n", f.name);
             ok = false;
             continue;
         }
@@ -185,20 +159,13 @@ int main(int argc, char** argv) {
         const Stats pf = measure(rows, f.promoted_float, eps_f);
         const Stats dd = measure(rows, f.as_double, eps_d);
         ok = ok && nf.max <= f.budget && dd.max <= f.budget;
-        emit("| %s | %zu | %g | %s | %s | %s | %s %s | %s %s |\n", f.name, rows.size(), f.budget,
-             fmt_stats(nf, true).c_str(), fmt_stats(pf, false).c_str(), fmt_stats(dd, false).c_str(),
-             fmt_input(rows[nf.worst].in).c_str(), rows[nf.worst].category.c_str(),
-             fmt_input(rows[dd.worst].in).c_str(), rows[dd.worst].category.c_str());
+        report.printf("| %s | %zu | %g | %s | %s | %s | %s %s | %s %s |\n", f.name, rows.size(), f.budget,
+                  fmt_stats(nf, true).c_str(), fmt_stats(pf, false).c_str(), fmt_stats(dd, false).c_str(),
+                  fmt_input(rows[nf.worst].in).c_str(), rows[nf.worst].category.c_str(),
+                  fmt_input(rows[dd.worst].in).c_str(), rows[dd.worst].category.c_str());
     }
-    emit("\n**bold**: the path the public float functions use. Budgets: R_F, R_C 4; R_D, R_J, F, K 8; Pi 16. "
-         "%s\n", ok ? "All within budget." : "SOME FUNCTION EXCEEDS ITS BUDGET.");
-    if (page.empty()) {
-        std::fputs(report.c_str(), stdout);
-    } else if (!write_into(page)) {
-        std::fprintf(stderr, "%s: cannot read it, or no accuracy_report markers\n", page.c_str());
-        return 2;
-    } else {
-        std::fprintf(stderr, "%s: accuracy table written\n", page.c_str());
-    }
+    report.printf("\n**bold**: the path the public float functions use. Budgets: R_F, R_C 4; R_D, R_J, F, K 8; Pi 16. "
+                  "%s\n", ok ? "All within budget." : "SOME FUNCTION EXCEEDS ITS BUDGET.");
+    if (report.finish(page) != 0) return 2;
     return ok ? 0 : 1;
 }

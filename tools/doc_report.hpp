@@ -1,0 +1,78 @@
+// apse — area-preserving parameterizations for spherical ellipses.
+// SPDX-License-Identifier: MIT
+#pragma once
+
+// A measuring tool's report, printed or written into a docs page: each named section replaces the
+// text between the page's lines "<!-- TOOL: NAME -->" and "<!-- /TOOL: NAME -->", so that a
+// measured table lives in one place, written by the tool that measures it (accuracy_report,
+// cosine_study; tools/bench_table.py does the same for the benchmarks).
+//
+//     apse_tools::DocReport report("cosine_study");
+//     report.section("receivers");
+//     report.printf("| ... |\n", ...);
+//     return report.finish(page);   // page "": print everything
+
+#include <cstdarg>
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace apse_tools {
+
+class DocReport {
+public:
+    explicit DocReport(std::string tool) : tool_(std::move(tool)) {}
+
+    /// What is printed from now on goes to the section `name`.
+    void section(const std::string& name) { sections_.emplace_back(name, std::string()); }
+
+    /// printf into the current section (a section "" if none was opened).
+    void printf(const char* format, ...) {
+        if (sections_.empty()) section("");
+        char buf[2048];
+        va_list args;
+        va_start(args, format);
+        std::vsnprintf(buf, sizeof buf, format, args);
+        va_end(args);
+        sections_.back().second += buf;
+    }
+
+    /// Prints every section (page empty), or writes each into `page` between its markers.
+    /// Returns 0, or 2 (with a message) if the page cannot be read or written or lacks markers.
+    int finish(const std::string& page) const {
+        if (page.empty()) {
+            for (const auto& s : sections_) std::fputs((s.second + "\n").c_str(), stdout);
+            return 0;
+        }
+        std::ifstream in(page);
+        std::stringstream buffer;
+        buffer << in.rdbuf();
+        std::string text = buffer.str();
+        if (!in) return fail(page, "cannot read it");
+        for (const auto& s : sections_) {
+            const std::string begin = "<!-- " + tool_ + ": " + s.first + " -->\n";
+            const std::string end = "<!-- /" + tool_ + ": " + s.first + " -->";
+            const std::size_t i = text.find(begin), j = text.find(end);
+            if (i == std::string::npos || j == std::string::npos || j < i) return fail(page, "no markers " + begin);
+            text = text.substr(0, i + begin.size()) + "\n" + s.second + "\n" + text.substr(j);
+            std::fprintf(stderr, "%s: section %s written\n", page.c_str(), s.first.c_str());
+        }
+        std::ofstream out(page);
+        out << text;
+        return out ? 0 : fail(page, "cannot write it");
+    }
+
+private:
+    static int fail(const std::string& page, const std::string& why) {
+        std::fprintf(stderr, "%s: %s\n", page.c_str(), why.c_str());
+        return 2;
+    }
+
+    std::string tool_;
+    std::vector<std::pair<std::string, std::string>> sections_;
+};
+
+}  // namespace apse_tools
