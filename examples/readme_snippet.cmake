@@ -1,10 +1,7 @@
 # Checks that the Markdown page DOC contains, word for word, the code between the
 # "// [readme-begin]" and "// [readme-end]" lines of SOURCE, so that the code a page shows is the
 # code that is compiled and run as a test.
-#   cmake -DDOC=<page.md> -DSOURCE=<file.cpp> -P readme_snippet.cmake   (-DREADME=<page.md> also works)
-if(NOT DEFINED DOC AND DEFINED README)
-  set(DOC ${README})
-endif()
+#   cmake -DDOC=<page.md> -DSOURCE=<file.cpp> -P readme_snippet.cmake
 if(NOT DEFINED DOC OR NOT DEFINED SOURCE)
   message(FATAL_ERROR "usage: cmake -DDOC=<page.md> -DSOURCE=<file.cpp> -P readme_snippet.cmake")
 endif()

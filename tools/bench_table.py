@@ -52,7 +52,7 @@ SECTIONS = {}  # section name -> its markdown, when written --into a page
 
 @contextlib.contextmanager
 def section(name):
-    """Collects what is printed inside into SECTIONS[name] (and prints it unless --into)."""
+    """Collects what is printed inside into SECTIONS[name] (main prints it, or writes it --into)."""
     buf = io.StringIO()
     with contextlib.redirect_stdout(buf):
         yield
@@ -230,28 +230,29 @@ def samplers_table(datas):
     head = header(datas[0].get('context', {}), have_median, reps, extra)
     disk_keys = {k for k in keys if not k[0].startswith('sphere_')}
     sphere_keys = keys - disk_keys
-    if disk_keys:
-        with section('disks'):
+
+    def titled_table(name, section_keys, titles, note):
+        with section(name):
             print(head)
             print()
-            ratio_table(layouts, disk_keys, times, ratios, SAMPLERS, len(datas),
-                        'Per fresh shading point: set-up (projection + map, or the baseline\'s own) + 1 or 16 '
-                        'samples, 1024 seeded unit disks 0.1–1000 radii away (log-uniform), all orientations, '
-                        'the same points of the square for every sampler. Ratio = median time / median time of '
-                        'DiskAreaSampler in the same run (> 1: slower than area sampling)')
+            ratio_table(layouts, section_keys, times, ratios, titles, len(datas), note)
+
+    if disk_keys:
+        titled_table('disks', disk_keys, SAMPLERS,
+                     'Per fresh shading point: set-up (projection + map, or the baseline\'s own) + 1 or 16 '
+                     'samples, 1024 seeded unit disks 0.1–1000 radii away (log-uniform), all orientations, '
+                     'the same points of the square for every sampler. Ratio = median time / median time of '
+                     'DiskAreaSampler in the same run (> 1: slower than area sampling)')
         with section('breakdown'):
             breakdown_table(times, ratios)
     if sphere_keys:
-        with section('spheres'):
-            print(head)
-            print()
-            ratio_table(layouts, sphere_keys, times, ratios, SPHERES, len(datas),
-                        'Sphere lights, per fresh shading point: set-up (project_sphere + map; the cone '
-                        'sampler\'s own) + 1 or 16 samples, 1024 seeded unit spheres 1.05–50 radii away '
-                        '(log-uniform); the cosine-weighted rows for receivers that see the cap above their '
-                        'horizon or cut by it. Ratio = median time / median time of pbrt-v4\'s cone sampling '
-                        'in the same run (the SphereLight rows: of cone sampling with the point and distance; '
-                        '> 1: slower)')
+        titled_table('spheres', sphere_keys, SPHERES,
+                     'Sphere lights, per fresh shading point: set-up (project_sphere + map; the cone '
+                     'sampler\'s own) + 1 or 16 samples, 1024 seeded unit spheres 1.05–50 radii away '
+                     '(log-uniform); the cosine-weighted rows for receivers that see the cap above their '
+                     'horizon or cut by it. Ratio = median time / median time of pbrt-v4\'s cone sampling '
+                     'in the same run (the SphereLight rows: of cone sampling with the point and distance; '
+                     '> 1: slower)')
 
 
 def ratio_table(layouts, keys, times, ratios, titles, n_layouts, note):
