@@ -12,7 +12,7 @@
 //   bench_mis_query --benchmark_repetitions=11 --benchmark_min_time=0.1
 //       --benchmark_enable_random_interleaving=true --benchmark_report_aggregates_only=true
 #include <apse/baselines/area.hpp>
-#include <apse/disk_light.hpp>
+#include <apse/apse.hpp>
 
 #include <benchmark/benchmark.h>
 
@@ -46,11 +46,11 @@ template <class T> const Inputs<T>& inputs() {
             const double d = 1e-3 * std::pow(1e5, u(rng)) * (u(rng) < 0.8 ? 1 : -1);
             r.o[i] = glm::vec<3, T>(T(8 * u(rng) - 4), T(8 * u(rng) - 4), T(d));
             const glm::vec<2, T> uv(T(u(rng)), T(u(rng)));
-            r.hit[i] = apse::DiskLight<T>(r.o[i], c, n, T(1), apse::DiskMap::ld_radial).sample(uv).direction;
+            r.hit[i] = apse::DiskLight<apse::LdRadialMap<T>>(r.o[i], c, n, T(1)).sample(uv).direction;
             const double rr = std::sqrt(u(rng)), phi = 6.283185307179586 * u(rng);
             const double z = std::sqrt(1 - rr * rr) * (d > 0 ? -1 : 1);  // the receiver faces the disk
             r.bsdf[i] = glm::vec<3, T>(T(rr * std::cos(phi)), T(rr * std::sin(phi)), T(z));
-            hits += apse::disk_light_pdf(r.o[i], c, n, T(1), r.bsdf[i]) > T(0);
+            hits += apse::disk_light_pdf<apse::LdRadialMap<T>>(r.o[i], c, n, T(1), r.bsdf[i]) > T(0);
         }
         r.hit_fraction_bsdf = double(hits) / kInputs;
         return r;
@@ -71,12 +71,12 @@ template <class T, Query Q> void query(benchmark::State& state, bool hits) {
         T p;
         if (Q == Query::area) p = apse::DiskAreaSampler<T>(in.o[i], frame).pdf(dirs[i]);
         else if (Q == Query::projection) p = apse::project_disk(in.o[i], c, n, T(1)).contains(dirs[i]) ? T(1) : T(0);
-        else if (Q == Query::exact) p = apse::disk_light_pdf(in.o[i], c, n, T(1), dirs[i]);
+        else if (Q == Query::exact) p = apse::disk_light_pdf<apse::LdRadialMap<T>>(in.o[i], c, n, T(1), dirs[i]);
         else if (Q == Query::tabulated)
-            p = apse::disk_light_pdf(in.o[i], c, n, T(1), apse::DiskMap::tabulated_ld_radial, table, dirs[i]);
+            p = apse::disk_light_pdf<apse::TabulatedLdRadialMap<T>>(in.o[i], c, n, T(1), dirs[i], table);
         else
-            p = apse::disk_light_pdf(in.o[i], c, n, T(1), apse::DiskMap::tabulated_ld_radial, table,
-                                     in.o[i].z > T(0) ? -receiver : receiver, dirs[i]);
+            p = apse::disk_light_pdf<apse::CosineWeighted<apse::TabulatedLdRadialMap<T>>>(
+                in.o[i], c, n, T(1), dirs[i], table, in.o[i].z > T(0) ? -receiver : receiver);
         benchmark::DoNotOptimize(p);
         i = (i + 1) & (kInputs - 1);
     }

@@ -43,10 +43,11 @@
 #include <apse/cosine_weighted.hpp>
 #include <apse/maps/ld_radial.hpp>
 #include <apse/maps/parallel.hpp>
-#include <apse/maps/radial.hpp>
-#include <apse/maps/tabulated.hpp>
+#include <apse/comparison.hpp>
+#include <apse/maps/tabulated_ld_radial.hpp>
 #include <apse/projection.hpp>
 #include <apse/sphere_light.hpp>
+#include <apse/diagnostics.hpp>
 
 #include <benchmark/benchmark.h>
 

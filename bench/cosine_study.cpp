@@ -24,6 +24,7 @@
 #include <vector>
 
 #include <apse/apse.hpp>
+#include <apse/comparison.hpp>
 
 #include "../examples/demo/points.hpp"  // the demo's per-pixel points
 #include "../tools/doc_report.hpp"

@@ -9,11 +9,11 @@
 // Irradiance at a shading point o (normal n) from a one-sided disk light: 16 stratified samples.
 float irradiance(glm::vec3 o, glm::vec3 n, glm::vec3 center, glm::vec3 normal, float radius) {
     if (!apse::disk_faces(o, center, normal)) return 0.0f;  // o behind the light: cull
-    const apse::DiskLight<float> light(o, center, normal, radius, apse::DiskMap::tabulated_ld_radial,
-                                       apse::default_table().view());  // set-up: once per shading point
+    const apse::DiskLight<apse::TabulatedLdRadialMap<float>> light(
+        o, center, normal, radius, apse::default_table().view());  // set-up: once per shading point
     float E = 0.0f;
     for (int i = 0; i < 16; ++i) {  // a 4 x 4 grid of strata here; any stratified or QMC points
-        const apse::DiskLightSample<float> s = light.sample(glm::vec2(i % 4 + 0.5f, i / 4 + 0.5f) / 4.0f);
+        const apse::PointSample<float> s = light.sample(glm::vec2(i % 4 + 0.5f, i / 4 + 0.5f) / 4.0f);
         if (s.pdf > 0.0f)  // pdf in solid angle, 0 = no sample; shadow ray: s.direction, s.distance
             E += std::fmax(glm::dot(n, s.direction), 0.0f) / s.pdf / 16.0f;
     }
@@ -37,11 +37,11 @@ int main() {
     // MIS: the light's density (solid angle) of a direction found by BSDF sampling — the density
     // the light samples from (the tabulated map's own, within 1 % of 1/Omega), also stateless.
     const apse::TabulationView table = apse::default_table().view();
-    const apse::DiskLight<float> light(o, center, normal, radius, apse::DiskMap::tabulated_ld_radial, table);
+    const apse::DiskLight<apse::TabulatedLdRadialMap<float>> light(o, center, normal, radius, table);
     const glm::vec3 w_bsdf = glm::normalize(center - o);
     const float p_light = light.pdf(w_bsdf);
     const float p_stateless =
-        apse::disk_light_pdf(o, center, normal, radius, apse::DiskMap::tabulated_ld_radial, table, w_bsdf);
+        apse::disk_light_pdf<apse::TabulatedLdRadialMap<float>>(o, center, normal, radius, w_bsdf, table);
     const float omega = light.solid_angle();
 
     const bool ok = std::fabs(E / exact - 1.0) < 1e-2 && std::fabs(p_light * omega - 1.0f) < 1e-2f &&

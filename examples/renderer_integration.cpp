@@ -5,6 +5,7 @@
 // readme_integration_example checks it); main() runs it for every map and checks the
 // estimates against the closed-form answer. Built and run as a test.
 #include <apse/apse.hpp>
+#include <apse/runtime_sampler.hpp>  // the map chosen at run time (from the scene)
 
 #include <cmath>
 #include <cstdio>
@@ -19,7 +20,7 @@ struct DiskEmitter {
     Vec3 center, normal;  // one-sided: emits on the side `normal` points to
     double radius;        // the scene's double; apse converts it to the vectors' float
     float radiance;
-    apse::DiskMap map = apse::DiskMap::tabulated_ld_radial;
+    apse::MapKind map = apse::MapKind::tabulated_ld_radial;  // read from the scene file
     apse::TabulationView table = apse::default_table().view();  // ignored by the exact maps
 };
 
@@ -34,7 +35,8 @@ struct LightSample {
 LightSample sample_light(const DiskEmitter& e, const glm::vec3& p, const glm::vec2& u) {
     const glm::vec3 c = to_glm(e.center), n = to_glm(e.normal);
     if (!apse::disk_faces(p, c, n)) return {glm::vec3(0.0f), 0.0f, 0.0f};
-    const apse::DiskLightSample<float> s = apse::sample_disk_light(p, c, n, e.radius, e.map, e.table, u);
+    const apse::DiskLight<apse::RuntimeSampler<float>> light(p, c, n, e.radius, e.map, e.table);
+    const apse::PointSample<float> s = light.sample(u);
     return {s.direction, s.distance, s.pdf};
 }
 
@@ -43,7 +45,7 @@ LightSample sample_light(const DiskEmitter& e, const glm::vec3& p, const glm::ve
 float pdf_light(const DiskEmitter& e, const glm::vec3& p, const glm::vec3& wi) {
     const glm::vec3 c = to_glm(e.center), n = to_glm(e.normal);
     if (!apse::disk_faces(p, c, n)) return 0.0f;
-    return apse::disk_light_pdf(p, c, n, e.radius, e.map, e.table, wi);
+    return apse::disk_light_pdf<apse::RuntimeSampler<float>>(p, c, n, e.radius, wi, e.map, e.table);
 }
 
 // Direct light reflected by a white Lambertian surface (BRDF 1/pi) at p with normal ns (occlusion
@@ -108,8 +110,8 @@ int main() {
     const double h2 = 4.0, rho2 = 0.25, r2 = 1.0, s = h2 + rho2 + r2;
     const double exact = 0.5 * (1.0 - (h2 + rho2 - r2) / std::sqrt(s * s - 4.0 * rho2 * r2));
     const glm::vec3 p(0.0f), ns(0.0f, 0.0f, 1.0f);
-    const apse::DiskMap maps[] = {apse::DiskMap::radial, apse::DiskMap::ld_radial, apse::DiskMap::parallel,
-                                  apse::DiskMap::tabulated, apse::DiskMap::tabulated_ld_radial};
+    const apse::MapKind maps[] = {apse::MapKind::radial, apse::MapKind::ld_radial, apse::MapKind::parallel,
+                                  apse::MapKind::tabulated, apse::MapKind::tabulated_ld_radial};
     const char* names[] = {"radial", "ld_radial", "parallel", "tabulated", "tabulated_ld_radial"};
     bool ok = true;
     for (int m = 0; m < 5; ++m) {

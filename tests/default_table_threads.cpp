@@ -3,7 +3,8 @@
 // build() (deterministic) — and a second build() rewrites the same values. Built normally and,
 // where possible, with -fsanitize=thread (test default_table_threads_tsan), which fails on a
 // data race in the first calls. Returns non-zero on failure.
-#include <apse/maps/tabulated.hpp>
+#include <apse/comparison.hpp>
+#include <apse/maps/tabulated_ld_radial.hpp>
 
 #include <cstdio>
 #include <cstring>

@@ -3,6 +3,11 @@
 #include <apse/apse.hpp>
 #include <apse/baselines/area.hpp>
 #include <apse/baselines/gamito.hpp>
+#include <apse/elliptic.hpp>
+#include <apse/spherical_rectangle.hpp>
+#include <apse/diagnostics.hpp>
+#include <apse/comparison.hpp>
+#include <apse/runtime_sampler.hpp>
 
 #include <cstdio>
 
@@ -47,16 +52,19 @@ static bool maps_disk_light_ok() {
     const apse::RadialMap<T> radial(e);
     const apse::LdRadialMap<T> ld(e);
     const apse::ParallelMap<T> parallel(e);
-    const apse::DiskLight<T> light(V(0), V(T(0.5), T(0), T(-1)), V(0, 0, 1), T(1), apse::DiskMap::parallel);
+    const apse::DiskLight<apse::RuntimeSampler<T>> light(V(0), V(T(0.5), T(0), T(-1)), V(0, 0, 1), T(1),
+                                                         apse::MapKind::parallel);
     const auto s = light.sample(u);
     apse::SampleDiagnostics diag{0};
     const T values[] = {
         radial.sample(u).pdf, apse::sample_with_diagnostics(radial, u, diag).pdf, radial.pdf(s.direction), radial.invert(s.direction).x,
-        radial.solid_angle(), apse::detail::MapAccess::quadrant_area(radial, T(0.5)), ld.sample(u).pdf, ld.pdf(s.direction),
+        radial.solid_angle(), radial.quadrant_area(T(0.5)), ld.sample(u).pdf, ld.pdf(s.direction),
         ld.invert(s.direction).y, parallel.sample(u).pdf, parallel.pdf(s.direction), parallel.invert(s.direction).x,
-        apse::detail::MapAccess::half_area(parallel, T(0.1)), s.pdf, s.distance, light.pdf(s.direction), light.invert(s.direction).x,
-        apse::sample_disk_light(V(0), V(T(0.5), T(0), T(-1)), V(0, 0, 1), T(1), apse::DiskMap::radial, u).pdf,
-        apse::disk_light_pdf(V(0), V(T(0.5), T(0), T(-1)), V(0, 0, 1), T(1), s.direction),
+        parallel.half_area(T(0.1)), s.pdf, s.distance, light.pdf(s.direction), light.invert(s.direction).x,
+        apse::DiskLight<apse::RuntimeSampler<T>>(V(0), V(T(0.5), T(0), T(-1)), V(0, 0, 1), T(1), apse::MapKind::radial)
+            .sample(u)
+            .pdf,
+        apse::disk_light_pdf<apse::LdRadialMap<T>>(V(0), V(T(0.5), T(0), T(-1)), V(0, 0, 1), T(1), s.direction),
     };
     for (T v : values)
         if (!apse::detail::is_finite(v) || !(v >= T(0))) return false;
@@ -110,30 +118,44 @@ static bool tabulated_ok() {
     // cosine-weighted over the tabulated map, and DiskLight's cosine option
     const apse::CosineWeighted<apse::TabulatedLdRadialMap<T>> cw(tld, V(T(0.3), T(0.1), T(-1)));  // facing the light
     const auto c = cw.sample(u);
-    const apse::DiskLight<T> lit(V(0), V(T(0.5), T(0), T(-1)), V(0, 0, 1), T(1), apse::DiskMap::ld_radial,
-                                 V(T(0.3), T(0.1), T(-1)));
+    const apse::DiskLight<apse::RuntimeSampler<T>> lit(V(0), V(T(0.5), T(0), T(-1)), V(0, 0, 1), T(1),
+                                                       apse::MapKind::ld_radial, V(T(0.3), T(0.1), T(-1)));
     const auto ls = lit.sample(u);
     // DiskLight with a tabulated map and the stateless pdfs
-    const apse::DiskLight<T> tl(V(0), V(T(0.5), T(0), T(-1)), V(0, 0, 1), 1.0, apse::DiskMap::tabulated_ld_radial,
-                                shared.view());
+    const apse::DiskLight<apse::RuntimeSampler<T>> tl(V(0), V(T(0.5), T(0), T(-1)), V(0, 0, 1), 1.0,
+                                                      apse::MapKind::tabulated_ld_radial, shared.view());
     const auto ts = tl.sample(u);
+    // DiskLight with the map's type chosen at compile time, plain and cosine-weighted
+    const apse::DiskLight<apse::TabulatedLdRadialMap<T>> typed(V(0), V(T(0.5), T(0), T(-1)), V(0, 0, 1), T(1),
+                                                               shared.view());
+    const auto ys = typed.sample(u);
+    const apse::DiskLight<apse::CosineWeighted<apse::TabulatedLdRadialMap<T>>> typed_lit(
+        V(0), V(T(0.5), T(0), T(-1)), V(0, 0, 1), T(1), shared.view(), V(T(0.3), T(0.1), T(-1)));
+    const auto yl = typed_lit.sample(u);
     // the projected-solid-angle sampler on its own
-    const apse::ProjectedSolidAngleSampler<T> psa(e, V(T(0.3), T(0.1), T(-1)));
+    const apse::detail::ProjectedSolidAngleSampler<T> psa(e, V(T(0.3), T(0.1), T(-1)));
     const auto p = psa.sample(u);
     const T more[] = {c.pdf, cw.pdf(c.direction), cw.invert(c.direction).x, ls.pdf, lit.pdf(ls.direction), ts.pdf,
                       tl.pdf(ts.direction),
-                      apse::disk_light_pdf(V(0), V(T(0.5), T(0), T(-1)), V(0, 0, 1), 1, apse::DiskMap::tabulated,
-                                           shared.view(), ts.direction),
-                      apse::disk_light_pdf(V(0), V(T(0.5), T(0), T(-1)), V(0, 0, 1), 1, apse::DiskMap::tabulated,
-                                           shared.view(), V(T(0.3), T(0.1), T(-1)), ts.direction),
-                      apse::sample_disk_light(V(0), V(T(0.5), T(0), T(-1)), V(0, 0, 1), T(1), apse::DiskMap::tabulated,
-                                              shared.view(), u).pdf,
+                      apse::disk_light_pdf<apse::RuntimeSampler<T>>(V(0), V(T(0.5), T(0), T(-1)), V(0, 0, 1), 1,
+                                                                    ts.direction, apse::MapKind::tabulated, shared.view()),
+                      apse::disk_light_pdf<apse::RuntimeSampler<T>>(V(0), V(T(0.5), T(0), T(-1)), V(0, 0, 1), 1,
+                                                                    ts.direction, apse::MapKind::tabulated, shared.view(),
+                                                                    V(T(0.3), T(0.1), T(-1))),
+                      apse::DiskLight<apse::RuntimeSampler<T>>(V(0), V(T(0.5), T(0), T(-1)), V(0, 0, 1), T(1),
+                                                               apse::MapKind::tabulated, shared.view())
+                          .sample(u)
+                          .pdf,
+                      ys.pdf, typed.pdf(ys.direction), typed.invert(ys.direction).x, yl.pdf,
+                      typed_lit.pdf(yl.direction), typed_lit.solid_angle(),
                       p.pdf, psa.pdf(p.direction), psa.invert(p.direction).y, psa.ellipse().tan_alpha,
-                      apse::ProjectedSolidAngleSampler<T>().pdf(p.direction)};
+                      apse::detail::ProjectedSolidAngleSampler<T>().pdf(p.direction)};
     for (T v : more)
         if (!apse::detail::is_finite(v) || !(v >= T(0))) return false;
     return s.pdf > T(0) && !tab.empty() && !tld.empty() && c.pdf > T(0) && cw.weighted() && !cw.empty() &&
-           lit.cosine_weighted() && ts.pdf > T(0) && apse::is_tabulated(tl.map()) && p.pdf > T(0) && !psa.empty();
+           lit.cosine_weighted() && ts.pdf > T(0) &&
+           (tl.sampler().kind() == apse::MapKind::tabulated || tl.sampler().kind() == apse::MapKind::tabulated_ld_radial) &&
+           ys.pdf > T(0) && yl.pdf > T(0) && typed_lit.cosine_weighted() && p.pdf > T(0) && !psa.empty();
 }
 
 int main() {

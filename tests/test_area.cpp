@@ -2,6 +2,7 @@
 // (uniform-by-area disk sampling with the solid-angle pdf).
 #include <apse/baselines/area.hpp>
 #include <apse/projection.hpp>
+#include <apse/math.hpp>
 
 #include "support/map_testing.hpp"
 

@@ -4,9 +4,10 @@
 // finite differences (area preservation) and by chi-square against the integrated pdf.
 #include <apse/maps/ld_radial.hpp>
 #include <apse/maps/parallel.hpp>
-#include <apse/maps/radial.hpp>
-#include <apse/maps/tabulated.hpp>
+#include <apse/comparison.hpp>
+#include <apse/maps/tabulated_ld_radial.hpp>
 #include <apse/projection.hpp>
+#include <apse/diagnostics.hpp>
 
 #include "support/default_table.hpp"
 #include "support/map_testing.hpp"

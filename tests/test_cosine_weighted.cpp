@@ -1,4 +1,4 @@
-// Tests of CosineWeighted<Map>, the ProjectedSolidAngleSampler it uses for the exact maps and the
+// Tests of CosineWeighted<Map>, the detail::ProjectedSolidAngleSampler it uses for the exact maps and the
 // warp it uses for the tabulated maps (maps/tabulated_cosine.hpp): the pdf it reports is
 // the density it draws from (chi-square against the reported pdf integrated over cells of the
 // light by quadrature; Monte Carlo of ∫ max(0, n·ω) dω against quadrature), pdf(sample) =
@@ -10,6 +10,9 @@
 #include "support/catch.hpp"
 
 #include <apse/apse.hpp>
+#include <apse/math.hpp>
+#include <apse/comparison.hpp>
+#include <apse/runtime_sampler.hpp>
 
 #include <cmath>
 #include <cstdint>
@@ -466,8 +469,8 @@ TEMPLATE_TEST_CASE("cosine-weighted DiskLight: the wrapper's density, points on 
     // the disk of kConfigs[2] (straddling the horizon), seen from the origin
     const Config c = kConfigs[2];
     const V3 o(T(0)), centre(T(c.h), T(0), T(c.d)), axis(T(0), T(0), T(1)), n = tv<T>(c.normal);
-    for (apse::DiskMap m : {apse::DiskMap::radial, apse::DiskMap::ld_radial, apse::DiskMap::parallel}) {
-        const apse::DiskLight<T> light(o, centre, axis, T(c.ra), m, n);
+    for (apse::MapKind m : {apse::MapKind::radial, apse::MapKind::ld_radial, apse::MapKind::parallel}) {
+        const apse::DiskLight<apse::RuntimeSampler<T>> light(o, centre, axis, T(c.ra), m, n);
         CHECK(light.cosine_weighted());
         const double ref = projected_solid_angle(c);
         const glm::dvec3 nd = glm::normalize(c.normal);
@@ -476,7 +479,7 @@ TEMPLATE_TEST_CASE("cosine-weighted DiskLight: the wrapper's density, points on 
         double sum = 0, sum2 = 0;
         for (int i = 0; i < N; ++i) {
             const glm::vec<2, T> u(rng.uniform<T>(), rng.uniform<T>());
-            const apse::DiskLightSample<T> s = light.sample(u);
+            const apse::PointSample<T> s = light.sample(u);
             REQUIRE(s.pdf > T(0));
             // the point is on the disk, along the direction (float: ~1e-6 relative)
             CHECK(std::fabs(double(s.point.z) - c.d) < (sizeof(T) == 4 ? 1e-5 : 1e-12));
@@ -492,8 +495,8 @@ TEMPLATE_TEST_CASE("cosine-weighted DiskLight: the wrapper's density, points on 
         CHECK(std::fabs(mean - ref) < 5 * se + 1e-6 * ref);  // 5 standard errors
     }
     // a zero receiver normal: the plain light
-    const apse::DiskLight<T> plain(o, centre, axis, T(c.ra), apse::DiskMap::ld_radial, V3(T(0)));
-    const apse::DiskLight<T> ref(o, centre, axis, T(c.ra), apse::DiskMap::ld_radial);
+    const apse::DiskLight<apse::RuntimeSampler<T>> plain(o, centre, axis, T(c.ra), apse::MapKind::ld_radial, V3(T(0)));
+    const apse::DiskLight<apse::LdRadialMap<T>> ref(o, centre, axis, T(c.ra));
     CHECK(plain.sample(glm::vec<2, T>(T(0.3), T(0.6))).pdf == ref.sample(glm::vec<2, T>(T(0.3), T(0.6))).pdf);
 }
 
@@ -514,7 +517,7 @@ double projected_solid_angle(const Config& c, int rings, int sectors) {
     return s;
 }
 
-/// A cosine-weighted sampler `s` of the ellipse `e` (ProjectedSolidAngleSampler on its own, or
+/// A cosine-weighted sampler `s` of the ellipse `e` (detail::ProjectedSolidAngleSampler on its own, or
 /// CosineWeighted over a map), for a light at the edge of its domain: every sample finite, inside
 /// the light and above the horizon with pdf > 0, pdf(sample) = the reported pdf,
 /// invert(sample(u)) = u, and the Monte Carlo mean of ∫ max(0, n·ω) dω within 5 standard errors
@@ -576,7 +579,7 @@ const Config kExtremes[] = {
 TEMPLATE_TEST_CASE("projected-solid-angle sampler: extreme lights", "[cosine]", float, double) {
     for (const Config& c : kExtremes) {
         const apse::SphericalEllipse<TestType> e = light_ellipse<TestType>(c);
-        check_extreme(c, e, apse::ProjectedSolidAngleSampler<TestType>(e, tv<TestType>(c.normal)), "exact sampler");
+        check_extreme(c, e, apse::detail::ProjectedSolidAngleSampler<TestType>(e, tv<TestType>(c.normal)), "exact sampler");
     }
 }
 
@@ -750,10 +753,10 @@ TEMPLATE_TEST_CASE("projected-solid-angle sampler: empty cases and outside direc
     const T nan = std::numeric_limits<T>::quiet_NaN();
     const glm::vec<2, T> u(T(0.3), T(0.6));
     // the default sampler, an empty ellipse, zero/NaN normals, the light below the horizon: empty
-    const apse::ProjectedSolidAngleSampler<T> none[] = {
-        apse::ProjectedSolidAngleSampler<T>(), apse::ProjectedSolidAngleSampler<T>(apse::SphericalEllipse<T>::make_empty(), V3(0, 0, 1)),
-        apse::ProjectedSolidAngleSampler<T>(e, V3(T(0))), apse::ProjectedSolidAngleSampler<T>(e, V3(nan, T(0), T(1))),
-        apse::ProjectedSolidAngleSampler<T>(e, -e.z)};
+    const apse::detail::ProjectedSolidAngleSampler<T> none[] = {
+        apse::detail::ProjectedSolidAngleSampler<T>(), apse::detail::ProjectedSolidAngleSampler<T>(apse::SphericalEllipse<T>::make_empty(), V3(0, 0, 1)),
+        apse::detail::ProjectedSolidAngleSampler<T>(e, V3(T(0))), apse::detail::ProjectedSolidAngleSampler<T>(e, V3(nan, T(0), T(1))),
+        apse::detail::ProjectedSolidAngleSampler<T>(e, -e.z)};
     for (const auto& s : none) {
         CHECK(s.empty());
         CHECK(s.sample(u).pdf == T(0));
@@ -762,7 +765,7 @@ TEMPLATE_TEST_CASE("projected-solid-angle sampler: empty cases and outside direc
         CHECK(std::isfinite(double(b.x + b.y)));
     }
     // straddling light: pdf 0 outside the ellipse and below the horizon, > 0 above inside
-    const apse::ProjectedSolidAngleSampler<T> s(e, tv<T>(kConfigs[2].normal));
+    const apse::detail::ProjectedSolidAngleSampler<T> s(e, tv<T>(kConfigs[2].normal));
     REQUIRE_FALSE(s.empty());
     const glm::dvec3 n = glm::normalize(kConfigs[2].normal);
     apse_test::Rng rng(7);
@@ -786,7 +789,7 @@ TEMPLATE_TEST_CASE("projected-solid-angle sampler: empty cases and outside direc
     }
     CHECK(inside_above > 0);
     CHECK(inside_below > 0);
-    STATIC_REQUIRE(std::is_trivially_copyable<apse::ProjectedSolidAngleSampler<T>>::value);
+    STATIC_REQUIRE(std::is_trivially_copyable<apse::detail::ProjectedSolidAngleSampler<T>>::value);
 }
 
 TEMPLATE_TEST_CASE("projected-solid-angle sampler: random ellipses and normals, finite results", "[cosine]", float, double) {
@@ -803,7 +806,7 @@ TEMPLATE_TEST_CASE("projected-solid-angle sampler: random ellipses and normals, 
         double tb = 0;
         const apse::SphericalEllipse<T> e = fuzz_ellipse<T>(rng, tb);
         const glm::vec<3, T> n = fuzz_normal<T>(rng, 0.2, 1e-6);
-        const apse::ProjectedSolidAngleSampler<T> s(e, n);
+        const apse::detail::ProjectedSolidAngleSampler<T> s(e, n);
         if (s.empty()) continue;
         ++samplers;
         const glm::dvec3 nd = glm::normalize(glm::dvec3(n));
@@ -825,8 +828,8 @@ TEST_CASE("projected-solid-angle sampler: a density beyond float's range is decl
     const auto e = apse::SphericalEllipse<float>::from_tangents(V(1, 0, 0), V(0, 1, 0), V(0, 0, 1), 1e-18f, 6.5e-19f);
     const auto ed = apse::SphericalEllipse<double>::from_tangents(glm::dvec3(1, 0, 0), glm::dvec3(0, 1, 0), glm::dvec3(0, 0, 1),
                                                                   double(1e-18f), double(6.5e-19f));
-    const apse::ProjectedSolidAngleSampler<float> s(e, V(1, 0.3f, 1e-22f));
-    const apse::ProjectedSolidAngleSampler<double> sd(ed, glm::dvec3(1, 0.3f, 1e-22f));
+    const apse::detail::ProjectedSolidAngleSampler<float> s(e, V(1, 0.3f, 1e-22f));
+    const apse::detail::ProjectedSolidAngleSampler<double> sd(ed, glm::dvec3(1, 0.3f, 1e-22f));
     REQUIRE_FALSE(s.empty());
     int declined = 0;
     for (int i = 0; i < 64; ++i)

@@ -1,31 +1,87 @@
-// disk_light.hpp: the one-call disk-light sampler — directions, points on the disk, distances and
-// pdfs, against an independent quadrature of the disk's solid angle; MIS pdf (the stateless
-// disk_light_pdf equals every sampler's own density: exact, tabulated, cosine-weighted); mixed
-// scalar arguments; bad input.
+// disk_light.hpp: the one-call disk-light sampler DiskLight<Sampler> — directions, points on the
+// disk, distances and pdfs, against an independent quadrature of the disk's solid angle; MIS pdf
+// (the stateless disk_light_pdf<Sampler> equals every sampler's own density: exact, tabulated,
+// cosine-weighted); the map chosen at run time (DiskLight<RuntimeSampler<T>>: bit for bit the
+// light of the map's own type); its size; mixed scalar arguments; bad input.
 #include <apse/disk_light.hpp>
 #include <apse/projection.hpp>
 #include <apse/baselines/area.hpp>
+#include <apse/math.hpp>
+#include <apse/comparison.hpp>
+#include <apse/cosine_weighted.hpp>
+#include <apse/runtime_sampler.hpp>
 
 #include "support/map_testing.hpp"
 
 #include "support/catch.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <cstring>
 #include <limits>
 #include <type_traits>
 
 namespace {
 template <class T> using Vec2 = glm::vec<2, T>;
 template <class T> using Vec3 = glm::vec<3, T>;
-const apse::DiskMap kMaps[] = {apse::DiskMap::radial, apse::DiskMap::ld_radial, apse::DiskMap::parallel};
-const apse::DiskMap kAllMaps[] = {apse::DiskMap::radial, apse::DiskMap::ld_radial, apse::DiskMap::parallel,
-                                  apse::DiskMap::tabulated, apse::DiskMap::tabulated_ld_radial};
-// Passed to GPU kernels by value: plain data. It holds only the chosen map (a union).
-static_assert(std::is_trivially_copyable<apse::DiskLight<float>>::value, "DiskLight must be trivially copyable");
-static_assert(std::is_trivially_copyable<apse::DiskLight<double>>::value, "DiskLight must be trivially copyable");
-static_assert(sizeof(apse::DiskLight<double>) <
+/// The light whose map is chosen at run time.
+template <class T> using RuntimeLight = apse::DiskLight<apse::RuntimeSampler<T>>;
+const apse::MapKind kMaps[] = {apse::MapKind::radial, apse::MapKind::ld_radial, apse::MapKind::parallel};
+const apse::MapKind kAllMaps[] = {apse::MapKind::radial, apse::MapKind::ld_radial, apse::MapKind::parallel,
+                                  apse::MapKind::tabulated, apse::MapKind::tabulated_ld_radial};
+/// True for the maps that read a tabulation table.
+constexpr bool is_tabulated(apse::MapKind m) {
+    return m == apse::MapKind::tabulated || m == apse::MapKind::tabulated_ld_radial;
+}
+// Passed to GPU kernels by value: plain data. DiskLight<RuntimeSampler> holds only the chosen map
+// (a union); DiskLight<Map> the map itself.
+static_assert(std::is_trivially_copyable<RuntimeLight<float>>::value, "DiskLight must be trivially copyable");
+static_assert(std::is_trivially_copyable<RuntimeLight<double>>::value, "DiskLight must be trivially copyable");
+static_assert(std::is_trivially_copyable<apse::DiskLight<apse::TabulatedLdRadialMap<float>>>::value,
+              "DiskLight must be trivially copyable");
+static_assert(std::is_trivially_copyable<apse::DiskLight<apse::CosineWeighted<apse::ParallelMap<double>>>>::value,
+              "DiskLight must be trivially copyable");
+static_assert(sizeof(RuntimeLight<double>) <
                   sizeof(apse::CosineWeighted<apse::LdRadialMap<double>>) + sizeof(apse::ParallelMap<double>),
-              "DiskLight holds one sampler, not several");
+              "DiskLight<RuntimeSampler> holds one sampler, not several");
+
+/// f(static_cast<Map*>(nullptr)) for the map type of the kind `m` (a type tag: the test names the
+/// compile-time type the RuntimeSampler of that kind stands for).
+template <class T, class F> void with_map_type(apse::MapKind m, F&& f) {
+    switch (m) {
+    case apse::MapKind::radial: f(static_cast<apse::RadialMap<T>*>(nullptr)); return;
+    case apse::MapKind::ld_radial: f(static_cast<apse::LdRadialMap<T>*>(nullptr)); return;
+    case apse::MapKind::parallel: f(static_cast<apse::ParallelMap<T>*>(nullptr)); return;
+    case apse::MapKind::tabulated: f(static_cast<apse::TabulatedMap<T>*>(nullptr)); return;
+    case apse::MapKind::tabulated_ld_radial: f(static_cast<apse::TabulatedLdRadialMap<T>*>(nullptr)); return;
+    }
+    FAIL("unknown MapKind " << int(m));
+}
+
+/// Whether Map is built from an ellipse and a table (the tabulated maps).
+template <class Map>
+constexpr bool reads_table =
+    std::is_constructible<Map, const apse::SphericalEllipse<typename Map::vec3::value_type>&, const apse::TabulationView&>::value;
+
+/// DiskLight<Map> of the disk (c, n, r) seen from o; the tabulated maps read `table`.
+template <class Map, class T>
+apse::DiskLight<Map> typed_light(const Vec3<T>& o, const Vec3<T>& c, const Vec3<T>& n, T r, const apse::TabulationView& table) {
+    if constexpr (reads_table<Map>) return apse::DiskLight<Map>(o, c, n, r, table);
+    else return apse::DiskLight<Map>(o, c, n, r);
+}
+
+/// DiskLight<CosineWeighted<Map>> of the same disk for the receiver normal nr.
+template <class Map, class T>
+apse::DiskLight<apse::CosineWeighted<Map>> typed_cosine_light(const Vec3<T>& o, const Vec3<T>& c, const Vec3<T>& n, T r,
+                                                              const apse::TabulationView& table, const Vec3<T>& nr) {
+    if constexpr (reads_table<Map>) return apse::DiskLight<apse::CosineWeighted<Map>>(o, c, n, r, table, nr);
+    else return apse::DiskLight<apse::CosineWeighted<Map>>(o, c, n, r, nr);
+}
+
+/// The same bits (NaN payloads and the sign of zero included).
+template <class T> bool same_bits(T a, T b) { return std::memcmp(&a, &b, sizeof(T)) == 0; }
 }  // namespace
 
 TEMPLATE_TEST_CASE("disk light: point, distance and pdf", "[disk_light]", float, double) {
@@ -51,9 +107,9 @@ TEMPLATE_TEST_CASE("disk light: point, distance and pdf", "[disk_light]", float,
     apse_test::Rng rng(9);
     const apse::DiskFrame<T> frame = apse::DiskFrame<T>::make(c, n, r);
     for (int from_frame = 0; from_frame < 2; ++from_frame)
-    for (apse::DiskMap m : kMaps) {
+    for (apse::MapKind m : kMaps) {
         // the light from the disk's parameters, or from its stored frame (the same checks)
-        const apse::DiskLight<T> light = from_frame ? apse::DiskLight<T>(o, frame, m) : apse::DiskLight<T>(o, c, n, r, m);
+        const RuntimeLight<T> light = from_frame ? RuntimeLight<T>(o, frame, m) : RuntimeLight<T>(o, c, n, r, m);
         INFO("map " << int(m) << (from_frame ? ", from the stored frame" : ""));
         CHECK(std::fabs(double(light.solid_angle()) - omega_ref) / omega_ref <= tol_omega);
         for (int i = 0; i < 500; ++i) {
@@ -69,7 +125,7 @@ TEMPLATE_TEST_CASE("disk light: point, distance and pdf", "[disk_light]", float,
             CHECK(std::fabs(glm::length(glm::dvec3(s.direction)) - 1) <= 8 * eps);
             // MIS: the pdf of the sampled direction, by the light and by the free function
             CHECK(light.pdf(s.direction) == s.pdf);
-            if (!from_frame) CHECK(apse::disk_light_pdf(o, c, n, r, s.direction) == s.pdf);
+            if (!from_frame) CHECK(apse::disk_light_pdf<apse::LdRadialMap<T>>(o, c, n, r, s.direction) == s.pdf);
             // the inverse gives the square point back (away from seams)
             if (u.x > T(0.01) && u.x < T(0.99) && u.y > T(0.01) && u.y < T(0.99)) {
                 const Vec2<T> back = light.invert(s.direction);
@@ -79,10 +135,10 @@ TEMPLATE_TEST_CASE("disk light: point, distance and pdf", "[disk_light]", float,
         }
         // directions that miss the disk have pdf 0
         CHECK(light.pdf(-light.ellipse().z) == T(0));
-        CHECK(apse::disk_light_pdf(o, c, n, r, Vec3<T>(-light.ellipse().z)) == T(0));
-        // the free function agrees with the class
+        CHECK(apse::disk_light_pdf<apse::LdRadialMap<T>>(o, c, n, r, Vec3<T>(-light.ellipse().z)) == T(0));
+        // a one-shot light (built and sampled in one expression) agrees with the kept one
         if (from_frame) continue;
-        const auto s1 = apse::sample_disk_light(o, c, n, r, m, Vec2<T>(T(0.3), T(0.8)));
+        const auto s1 = RuntimeLight<T>(o, c, n, r, m).sample(Vec2<T>(T(0.3), T(0.8)));
         const auto s2 = light.sample(Vec2<T>(T(0.3), T(0.8)));
         CHECK(s1.direction == s2.direction);
         CHECK(s1.pdf == s2.pdf);
@@ -110,42 +166,51 @@ TEMPLATE_TEST_CASE("disk light from a stored DiskFrame: every map, plain and cos
     const glm::dvec3 cd(c), nd = glm::normalize(glm::dvec3(n));
     apse_test::Rng rng(17);
     for (int cosine = 0; cosine < 2; ++cosine)
-        for (apse::DiskMap m : kAllMaps) {
+        for (apse::MapKind m : kAllMaps) {
             INFO("map " << int(m) << (cosine ? ", cosine-weighted" : ""));
-            const apse::DiskLight<T> framed = cosine ? apse::DiskLight<T>(o, frame, m, table, nr)
-                                                     : apse::DiskLight<T>(o, frame, m, table);
-            const apse::DiskLight<T> plain = cosine ? apse::DiskLight<T>(o, c, n, r, m, table, nr)
-                                                    : apse::DiskLight<T>(o, c, n, r, m, table);
+            const RuntimeLight<T> framed = cosine ? RuntimeLight<T>(o, frame, m, table, nr) : RuntimeLight<T>(o, frame, m, table);
+            const RuntimeLight<T> plain = cosine ? RuntimeLight<T>(o, c, n, r, m, table, nr) : RuntimeLight<T>(o, c, n, r, m, table);
             REQUIRE_FALSE(framed.empty());
             CHECK(framed.cosine_weighted() == bool(cosine));
             for (int i = 0; i < 200; ++i) {
                 const Vec2<T> u(rng.uniform<T>(), rng.uniform<T>());
                 const auto s = framed.sample(u), p = plain.sample(u);
                 REQUIRE(s.pdf > T(0));
-                if (!cosine && !apse::is_tabulated(m)) CHECK(framed.pdf(s.direction) == s.pdf);  // 1/Omega
+                if (!cosine && !is_tabulated(m)) CHECK(framed.pdf(s.direction) == s.pdf);  // 1/Omega
                 else CHECK(std::fabs(double(framed.pdf(s.direction)) / double(s.pdf) - 1) <= self_tol);
                 CHECK(std::fabs(double(s.pdf) / double(p.pdf) - 1) <= tol);
                 CHECK(glm::length(glm::dvec3(s.direction) - glm::dvec3(p.direction)) <= tol);
                 CHECK(std::fabs(glm::dot(glm::dvec3(s.point) - cd, nd)) <= tol);
             }
         }
-    // the table-free overloads: exact maps; a tabulated map without a table is the empty light
-    CHECK(apse::DiskLight<T>(o, frame).map() == apse::DiskMap::ld_radial);
-    CHECK(apse::DiskLight<T>(o, frame, apse::DiskMap::parallel, nr).cosine_weighted());
+    // the table-free constructors: exact maps (the map's own type, or its kind without a table);
+    // a tabulated map without a table is the empty light
+    const apse::DiskLight<apse::LdRadialMap<T>> ld(o, frame);
+    CHECK_FALSE(ld.empty());
+    CHECK(RuntimeLight<T>(o, frame, apse::MapKind::ld_radial).sampler().kind() == apse::MapKind::ld_radial);
+    CHECK(RuntimeLight<T>(o, frame, apse::MapKind::ld_radial).sample(Vec2<T>(T(0.4), T(0.6))).pdf ==
+          ld.sample(Vec2<T>(T(0.4), T(0.6))).pdf);
+    CHECK(RuntimeLight<T>(o, frame, apse::MapKind::parallel, nr).cosine_weighted());
+    CHECK(apse::DiskLight<apse::CosineWeighted<apse::ParallelMap<T>>>(o, frame, nr).cosine_weighted());
     // cosine_weighted() is whether the samples are: not for a zero receiver normal (the plain
     // map) nor for the light below the receiver's horizon (empty)
-    CHECK_FALSE(apse::DiskLight<T>(o, frame, apse::DiskMap::parallel, Vec3<T>(0)).cosine_weighted());
-    CHECK_FALSE(apse::DiskLight<T>(o, frame, apse::DiskMap::tabulated_ld_radial, table, Vec3<T>(0)).cosine_weighted());
-    const apse::DiskLight<T> below(o, frame, apse::DiskMap::tabulated_ld_radial, table, -(frame.center - o));
+    CHECK_FALSE(RuntimeLight<T>(o, frame, apse::MapKind::parallel, Vec3<T>(0)).cosine_weighted());
+    CHECK_FALSE(RuntimeLight<T>(o, frame, apse::MapKind::tabulated_ld_radial, table, Vec3<T>(0)).cosine_weighted());
+    CHECK_FALSE(apse::DiskLight<apse::CosineWeighted<apse::ParallelMap<T>>>(o, frame, Vec3<T>(0)).cosine_weighted());
+    const RuntimeLight<T> below(o, frame, apse::MapKind::tabulated_ld_radial, table, -(frame.center - o));
     CHECK(below.empty());
     CHECK_FALSE(below.cosine_weighted());
-    CHECK(apse::DiskLight<T>(o, frame, apse::DiskMap::tabulated).empty());
+    const apse::DiskLight<apse::CosineWeighted<apse::TabulatedLdRadialMap<T>>> below_typed(o, frame, table,
+                                                                                           -(frame.center - o));
+    CHECK(below_typed.empty());
+    CHECK_FALSE(below_typed.cosine_weighted());
+    CHECK(RuntimeLight<T>(o, frame, apse::MapKind::tabulated).empty());
     // an invalid frame gives the empty light
     const T nan = std::numeric_limits<T>::quiet_NaN();
     for (const apse::DiskFrame<T>& bad : {apse::DiskFrame<T>::make(c, n, T(0)), apse::DiskFrame<T>::make(c, Vec3<T>(0), r),
                                           apse::DiskFrame<T>::make(Vec3<T>(nan, 0, 0), n, r)}) {
         CHECK(apse::project_disk(o, bad).empty());
-        const apse::DiskLight<T> light(o, bad, apse::DiskMap::tabulated_ld_radial, table, nr);
+        const RuntimeLight<T> light(o, bad, apse::MapKind::tabulated_ld_radial, table, nr);
         CHECK(light.empty());
         CHECK(light.sample(Vec2<T>(T(0.4), T(0.6))).pdf == T(0));
     }
@@ -173,22 +238,22 @@ TEMPLATE_TEST_CASE("disk light: degenerate and bad input", "[disk_light][robust]
         {Vec3<T>(5, 0, -1), c, n, T(1)},    // o in the disk's plane
     };
     for (const Case& b : bad)
-        for (apse::DiskMap m : kMaps) {
-            const apse::DiskLight<T> light(b.o, b.c, b.n, b.r, m);
+        for (apse::MapKind m : kMaps) {
+            const RuntimeLight<T> light(b.o, b.c, b.n, b.r, m);
             const auto s = light.sample(Vec2<T>(T(0.4), T(0.6)));
             CHECK(s.pdf == T(0));
             CHECK(finite3(s.direction));
             CHECK(light.pdf(Vec3<T>(0, 0, -1)) == T(0));
-            CHECK(apse::disk_light_pdf(b.o, b.c, b.n, b.r, Vec3<T>(0, 0, -1)) == T(0));
+            CHECK(apse::disk_light_pdf<apse::LdRadialMap<T>>(b.o, b.c, b.n, b.r, Vec3<T>(0, 0, -1)) == T(0));
         }
-    for (apse::DiskMap m : kMaps) {
-        const apse::DiskLight<T> light(o, c, n, T(1), m);
+    for (apse::MapKind m : kMaps) {
+        const RuntimeLight<T> light(o, c, n, T(1), m);
         CHECK(light.sample(Vec2<T>(nan, T(0.5))).pdf == T(0));
         const auto s = light.sample(Vec2<T>(T(2), T(-1)));  // clamped onto the square
         CHECK(s.pdf > T(0));
         CHECK(finite3(s.point));
         // o behind the disk: the same ellipse (two-sided), the point on the disk
-        const apse::DiskLight<T> behind(Vec3<T>(0, 0, -2), c, n, T(1), m);
+        const RuntimeLight<T> behind(Vec3<T>(0, 0, -2), c, n, T(1), m);
         const auto sb = behind.sample(Vec2<T>(T(0.25), T(0.75)));
         CHECK(sb.pdf > T(0));
         CHECK(std::fabs(double(sb.point.z) + 1) <= 1e-5);
@@ -220,7 +285,8 @@ TEMPLATE_TEST_CASE("disk light: the stateless pdf is every sampler's own density
                    double) {
     using T = TestType;
     // For every map, plain and cosine-weighted, at random lights and shading points:
-    // * disk_light_pdf(o, c, n, r, map, table[, n_r], w) == DiskLight(...).pdf(w) bit for bit, for
+    // * disk_light_pdf<RuntimeSampler<T>>(o, c, n, r, w, map, table[, n_r]) ==
+    //   DiskLight<RuntimeSampler<T>>(o, c, n, r, map, table[, n_r]).pdf(w) bit for bit, for
     //   sampled directions and for random directions (hits and misses): a renderer's stateless MIS
     //   query and its light object agree exactly — where the compiler cannot contract a·b + c
     //   into an FMA (__FP_FAST_FMA undefined). With contraction (-march=x86-64-v3
@@ -251,14 +317,14 @@ TEMPLATE_TEST_CASE("disk light: the stateless pdf is every sampler's own density
 #endif
     for (int scene = 0; scene < 60; ++scene) {
         const Scene<T> sc = random_scene<T>(rng);
-        for (apse::DiskMap m : kAllMaps)
+        for (apse::MapKind m : kAllMaps)
             for (int cosine = 0; cosine < 2; ++cosine) {
                 INFO("scene " << scene << " map " << int(m) << " cosine " << cosine);
-                const apse::DiskLight<T> light = cosine ? apse::DiskLight<T>(sc.o, sc.c, sc.n, sc.r, m, table, sc.rn)
-                                                        : apse::DiskLight<T>(sc.o, sc.c, sc.n, sc.r, m, table);
+                const RuntimeLight<T> light = cosine ? RuntimeLight<T>(sc.o, sc.c, sc.n, sc.r, m, table, sc.rn)
+                                                     : RuntimeLight<T>(sc.o, sc.c, sc.n, sc.r, m, table);
                 const auto stateless = [&](const Vec3<T>& w) {
-                    return cosine ? apse::disk_light_pdf(sc.o, sc.c, sc.n, sc.r, m, table, sc.rn, w)
-                                  : apse::disk_light_pdf(sc.o, sc.c, sc.n, sc.r, m, table, w);
+                    return cosine ? apse::disk_light_pdf<apse::RuntimeSampler<T>>(sc.o, sc.c, sc.n, sc.r, w, m, table, sc.rn)
+                                  : apse::disk_light_pdf<apse::RuntimeSampler<T>>(sc.o, sc.c, sc.n, sc.r, w, m, table);
                 };
                 const auto agree = [&](T p, T q) {  // stateless p, light q
                     if (!may_contract || p == q) {
@@ -283,12 +349,12 @@ TEMPLATE_TEST_CASE("disk light: the stateless pdf is every sampler's own density
                     agree(p, light.pdf(s.direction));
                     const double rel = std::fabs(double(p) / double(s.pdf) - 1);
                     INFO("pdf " << p << " sampled " << s.pdf << " relative difference " << rel);
-                    if (!cosine && !apse::is_tabulated(m)) {
+                    if (!cosine && !is_tabulated(m)) {
                         agree(p, s.pdf);
                         ++exact_checked;
                     } else if (rel > tol) {
                         ++edge;
-                        CHECK(apse::is_tabulated(m));  // only the tabulated bins have edges
+                        CHECK(is_tabulated(m));  // only the tabulated bins have edges
                         CHECK(rel < 0.02);
                     }
                     ++checked;
@@ -321,21 +387,122 @@ TEMPLATE_TEST_CASE("disk light: the stateless pdf is every sampler's own density
     CHECK(misses > 1000);
 }
 
+TEMPLATE_TEST_CASE("disk light: its size is the sampler's and three vectors", "[disk_light][api]", float, double) {
+    using T = TestType;
+    // DiskLight<Sampler> holds the shading point, the disk's centre and normal, and the sampler:
+    // nothing else (the former DiskLight<T> held a union of every sampler it could be, whatever
+    // the map; DiskLight<RuntimeSampler<T>> still does, a static_assert above bounds it).
+    using V = glm::vec<3, T>;
+    INFO("sizeof(DiskLight<TabulatedLdRadialMap>) " << sizeof(apse::DiskLight<apse::TabulatedLdRadialMap<T>>)
+                                                    << ", sizeof(TabulatedLdRadialMap) "
+                                                    << sizeof(apse::TabulatedLdRadialMap<T>) << ", 3 vectors "
+                                                    << 3 * sizeof(V));
+    CHECK(sizeof(apse::DiskLight<apse::TabulatedLdRadialMap<T>>) <= sizeof(apse::TabulatedLdRadialMap<T>) + 3 * sizeof(V));
+}
+
+TEMPLATE_TEST_CASE("disk light: RuntimeSampler is bit for bit the map's own type", "[disk_light]", float, double) {
+    using T = TestType;
+    // DiskLight<RuntimeSampler<T>>(..., kind, table[, n_r]) and DiskLight<Map>(...[, table])
+    // (DiskLight<CosineWeighted<Map>>(...[, table], n_r)) run the same code on the same inputs:
+    // the same sample (direction, pdf, point, distance), pdf and invert, bit for bit, for every
+    // kind, plain and cosine-weighted, at random lights and shading points (sampled directions,
+    // directions towards the disk's plane around it, uniform directions). Where the compiler may
+    // contract a·b + c into FMAs (__FP_FAST_FMA; the fma-nosimd configuration) the map's code
+    // inlined at two call sites may round differently, as for the stateless pdf above: then
+    // they agree to 1e-3 (float) / 1e-9 (double) relative (absolute below 1), with < 1 % flips
+    // (a tabulated bin edge, the rim, a seam of the square) beyond that.
+#if defined(__FP_FAST_FMA) || defined(__FP_FAST_FMAF)
+    const bool may_contract = true;
+#else
+    const bool may_contract = false;
+#endif
+    const double tol = sizeof(T) == 4 ? 1e-3 : 1e-9;
+    const apse::TabulationView table = apse::default_table().view();
+    apse_test::Rng rng(sizeof(T) == 4 ? 41 : 42);
+    long compared = 0, flips = 0, sampled = 0;
+    const auto match = [&](T a, T b) {  // runtime a, typed b
+        ++compared;
+        if (same_bits(a, b)) return;
+        INFO("runtime " << a << " typed " << b);
+        if (!may_contract) {
+            CHECK(same_bits(a, b));
+            return;
+        }
+        const double scale = std::max({1.0, std::fabs(double(a)), std::fabs(double(b))});
+        if (!(std::fabs(double(a) - double(b)) <= tol * scale)) ++flips;
+    };
+    const auto match2 = [&](const Vec2<T>& a, const Vec2<T>& b) {
+        match(a.x, b.x);
+        match(a.y, b.y);
+    };
+    const auto match3 = [&](const Vec3<T>& a, const Vec3<T>& b) {
+        match(a.x, b.x);
+        match(a.y, b.y);
+        match(a.z, b.z);
+    };
+    for (int scene = 0; scene < 30; ++scene) {
+        const Scene<T> sc = random_scene<T>(rng);
+        const glm::dvec3 nd = glm::normalize(glm::dvec3(sc.n));
+        const Vec3<T> e1 = Vec3<T>(apse::detail::any_perpendicular(nd)), e2 = Vec3<T>(glm::cross(nd, glm::dvec3(e1)));
+        for (apse::MapKind m : kAllMaps)
+            for (int cosine = 0; cosine < 2; ++cosine)
+                with_map_type<T>(m, [&](auto* tag) {
+                    using Map = std::remove_pointer_t<decltype(tag)>;
+                    INFO("scene " << scene << " map " << int(m) << " cosine " << cosine);
+                    const RuntimeLight<T> runtime = cosine ? RuntimeLight<T>(sc.o, sc.c, sc.n, sc.r, m, table, sc.rn)
+                                                           : RuntimeLight<T>(sc.o, sc.c, sc.n, sc.r, m, table);
+                    const auto compare = [&](const auto& typed) {
+                        CHECK(runtime.sampler().kind() == m);
+                        CHECK(runtime.sampler().cosine() == bool(cosine));
+                        CHECK(runtime.empty() == typed.empty());
+                        CHECK(runtime.cosine_weighted() == typed.cosine_weighted());
+                        for (int i = 0; i < 24; ++i) {
+                            const Vec2<T> u(rng.uniform<T>(), rng.uniform<T>());
+                            const auto a = runtime.sample(u), b = typed.sample(u);
+                            match3(a.direction, b.direction);
+                            match(a.pdf, b.pdf);
+                            match3(a.point, b.point);
+                            match(a.distance, b.distance);
+                            if (a.pdf > T(0)) ++sampled;
+                            // at the sampled direction (each light's own: equal where the samples are)
+                            match(runtime.pdf(a.direction), typed.pdf(a.direction));
+                            match2(runtime.invert(a.direction), typed.invert(a.direction));
+                        }
+                        for (int i = 0; i < 24; ++i) {
+                            const T a = T(6.283185307179586) * rng.uniform<T>(), rho = T(1.3) * sc.r * std::sqrt(rng.uniform<T>());
+                            const Vec3<T> w = i % 2 ? sc.c + rho * (std::cos(a) * e1 + std::sin(a) * e2) - sc.o
+                                                    : Vec3<T>(rng.uniform<T>() - T(0.5), rng.uniform<T>() - T(0.5),
+                                                              rng.uniform<T>() - T(0.5));
+                            match(runtime.pdf(w), typed.pdf(w));
+                            match2(runtime.invert(w), typed.invert(w));
+                        }
+                    };
+                    if (cosine) compare(typed_cosine_light<Map>(sc.o, sc.c, sc.n, sc.r, table, sc.rn));
+                    else compare(typed_light<Map>(sc.o, sc.c, sc.n, sc.r, table));
+                });
+    }
+    std::printf("[%s] RuntimeSampler vs the map's type: %ld values compared (%ld samples), FMA contraction %s, %ld flips\n",
+                sizeof(T) == 4 ? "float" : "double", compared, sampled, may_contract ? "possible" : "impossible", flips);
+    CHECK(sampled > 5000);
+    CHECK(flips * 100 < compared);
+}
+
 TEMPLATE_TEST_CASE("disk light: the exact maps' pdf is not the tabulated density", "[disk_light][mis]", float, double) {
     using T = TestType;
     // Why the tabulated maps need their own stateless query: the exact maps' disk_light_pdf
-    // (1/Omega) differs from the tabulated density by up to the table's error (0.44 % for the
+    // (disk_light_pdf<LdRadialMap<T>>: 1/Omega) differs from the tabulated density by up to the table's error (0.44 % for the
     // default table, docs/tabulated.md), far above rounding, for a close, large light (a unit
     // disk seen from 0.03 above its plane, 0.9 from its centre: alpha ~ 1.50).
     const Vec3<T> o(0), c(T(0.9), T(0), T(-0.03)), n(0, 0, 1);
     const apse::TabulationView table = apse::default_table().view();
-    const apse::DiskLight<T> light(o, c, n, T(1), apse::DiskMap::tabulated_ld_radial, table);
+    const apse::DiskLight<apse::TabulatedLdRadialMap<T>> light(o, c, n, T(1), table);
     double worst = 0;
     for (int i = 0; i < 32; ++i)
         for (int j = 0; j < 32; ++j) {
             const auto s = light.sample(Vec2<T>(T((i + 0.5) / 32), T((j + 0.5) / 32)));
             REQUIRE(s.pdf > T(0));
-            worst = std::max(worst, std::fabs(double(apse::disk_light_pdf(o, c, n, T(1), s.direction)) / double(s.pdf) - 1));
+            worst = std::max(worst, std::fabs(double(apse::disk_light_pdf<apse::LdRadialMap<T>>(o, c, n, T(1), s.direction)) /
+                                                  double(s.pdf) - 1));
         }
     // 1e-3: a thousand times float's rounding of either pdf (measured: 1.7e-3 in double at 64 x 64 points)
     std::printf("[%s] max |1/Omega / tabulated pdf − 1| = %.3g\n", sizeof(T) == 4 ? "float" : "double", worst);
@@ -347,21 +514,37 @@ TEMPLATE_TEST_CASE("disk light: tabulated maps need a valid table", "[disk_light
     using T = TestType;
     const Vec3<T> o(0), c(T(0.3), T(0), T(-1)), n(0, 0, 1), w(T(0.3), T(0), T(-1));
     const apse::TabulationView none{nullptr, 0, 0, 0};
-    for (apse::DiskMap m : {apse::DiskMap::tabulated, apse::DiskMap::tabulated_ld_radial}) {
+    for (apse::MapKind m : {apse::MapKind::tabulated, apse::MapKind::tabulated_ld_radial}) {
         // no table (the constructors without one) or an invalid view: the empty light
-        const apse::DiskLight<T> lights[] = {apse::DiskLight<T>(o, c, n, T(1), m),
-                                             apse::DiskLight<T>(o, c, n, T(1), m, none),
-                                             apse::DiskLight<T>(o, c, n, T(1), m, Vec3<T>(0, 0, -1))};
+        const RuntimeLight<T> lights[] = {RuntimeLight<T>(o, c, n, T(1), m), RuntimeLight<T>(o, c, n, T(1), m, none),
+                                          RuntimeLight<T>(o, c, n, T(1), m, Vec3<T>(0, 0, -1))};
         for (const auto& light : lights) {
             CHECK(light.sample(Vec2<T>(T(0.4), T(0.6))).pdf == T(0));
             CHECK(light.pdf(w) == T(0));
-            CHECK(light.map() == m);
+            CHECK(light.sampler().kind() == m);
         }
-        CHECK(apse::disk_light_pdf(o, c, n, T(1), m, none, w) == T(0));
-        CHECK(apse::disk_light_pdf(o, c, n, T(1), m, none, Vec3<T>(0, 0, -1), w) == T(0));
-        CHECK(apse::sample_disk_light(o, c, n, T(1), m, none, Vec2<T>(T(0.4), T(0.6))).pdf == T(0));
+        // the map's own type with an invalid view, plain and cosine-weighted: the empty light too
+        with_map_type<T>(m, [&](auto* tag) {
+            using Map = std::remove_pointer_t<decltype(tag)>;
+            if constexpr (reads_table<Map>) {
+                const apse::DiskLight<Map> typed(o, c, n, T(1), none);
+                const apse::DiskLight<apse::CosineWeighted<Map>> typed_lit(o, c, n, T(1), none, Vec3<T>(0, 0, -1));
+                CHECK(typed.empty());
+                CHECK(typed.sample(Vec2<T>(T(0.4), T(0.6))).pdf == T(0));
+                CHECK(typed.pdf(w) == T(0));
+                CHECK(typed_lit.empty());
+                CHECK(typed_lit.sample(Vec2<T>(T(0.4), T(0.6))).pdf == T(0));
+                CHECK(typed_lit.pdf(w) == T(0));
+                CHECK(apse::disk_light_pdf<Map>(o, c, n, T(1), w, none) == T(0));
+            } else {
+                FAIL("a tabulated kind without a table-reading type");
+            }
+        });
+        CHECK(apse::disk_light_pdf<apse::RuntimeSampler<T>>(o, c, n, T(1), w, m, none) == T(0));
+        CHECK(apse::disk_light_pdf<apse::RuntimeSampler<T>>(o, c, n, T(1), w, m, none, Vec3<T>(0, 0, -1)) == T(0));
+        CHECK(RuntimeLight<T>(o, c, n, T(1), m, none).sample(Vec2<T>(T(0.4), T(0.6))).pdf == T(0));
         // with the table: a sample, and the solid angle is the ellipse's
-        const apse::DiskLight<T> ok(o, c, n, T(1), m, apse::default_table().view());
+        const RuntimeLight<T> ok(o, c, n, T(1), m, apse::default_table().view());
         CHECK(ok.sample(Vec2<T>(T(0.4), T(0.6))).pdf > T(0));
         CHECK(ok.pdf(w) > T(0));
         CHECK(ok.solid_angle() == apse::detail::solid_angle_of(ok.ellipse()));
@@ -373,13 +556,13 @@ TEMPLATE_TEST_CASE("disk light: tabulated maps need a valid table", "[disk_light
             CHECK(std::fabs(double(back.x - u.x)) <= (sizeof(T) == 4 ? 2e-3 : 1e-8));
             CHECK(std::fabs(double(back.y - u.y)) <= (sizeof(T) == 4 ? 2e-3 : 1e-8));
         }
-        const auto s1 = apse::sample_disk_light(o, c, n, T(1), m, apse::default_table().view(), Vec2<T>(T(0.3), T(0.8)));
+        const auto s1 = RuntimeLight<T>(o, c, n, T(1), m, apse::default_table().view()).sample(Vec2<T>(T(0.3), T(0.8)));
         const auto s2 = ok.sample(Vec2<T>(T(0.3), T(0.8)));
         CHECK(s1.direction == s2.direction);
         CHECK(s1.pdf == s2.pdf);
-        const auto s3 = apse::sample_disk_light(o, c, n, T(1), m, apse::default_table().view(), Vec3<T>(0, 0, -1),
-                                                Vec2<T>(T(0.3), T(0.8)));
-        const apse::DiskLight<T> lit(o, c, n, T(1), m, apse::default_table().view(), Vec3<T>(0, 0, -1));
+        const auto s3 = RuntimeLight<T>(o, c, n, T(1), m, apse::default_table().view(), Vec3<T>(0, 0, -1))
+                            .sample(Vec2<T>(T(0.3), T(0.8)));
+        const RuntimeLight<T> lit(o, c, n, T(1), m, apse::default_table().view(), Vec3<T>(0, 0, -1));
         CHECK(lit.cosine_weighted());
         CHECK(s3.pdf == lit.sample(Vec2<T>(T(0.3), T(0.8))).pdf);
     }
@@ -400,20 +583,28 @@ TEST_CASE("disk light: mixed scalar arguments (float vectors, double or int radi
     CHECK(e_i.tan_beta == apse::project_disk(o, c, n, 2.0f).tan_beta);
     CHECK(apse::project_sphere(o, c, 0.5).tan_alpha == apse::project_sphere(o, c, 0.5f).tan_alpha);
     const apse::TabulationView table = apse::default_table().view();
-    for (apse::DiskMap m : kAllMaps) {
-        CHECK(apse::sample_disk_light(o, c, n, 1.5, m, table, u).pdf == apse::sample_disk_light(o, c, n, 1.5f, m, table, u).pdf);
-        CHECK(apse::disk_light_pdf(o, c, n, 1.5, m, table, w) == apse::disk_light_pdf(o, c, n, 1.5f, m, table, w));
-        CHECK(apse::disk_light_pdf(o, c, n, 1.5, m, table, n, w) == apse::disk_light_pdf(o, c, n, 1.5f, m, table, n, w));
+    using RS = apse::RuntimeSampler<float>;
+    static_assert(std::is_same<decltype(apse::disk_light_pdf<RS>(o, c, n, 1.5, w, apse::MapKind::ld_radial, table)), float>::value,
+                  "float result");
+    static_assert(std::is_same<decltype(apse::disk_light_pdf<apse::LdRadialMap<float>>(o, c, n, 2, w)), float>::value,
+                  "float result");
+    for (apse::MapKind m : kAllMaps) {
+        CHECK(RuntimeLight<float>(o, c, n, 1.5, m, table).sample(u).pdf == RuntimeLight<float>(o, c, n, 1.5f, m, table).sample(u).pdf);
+        CHECK(apse::disk_light_pdf<RS>(o, c, n, 1.5, w, m, table) == apse::disk_light_pdf<RS>(o, c, n, 1.5f, w, m, table));
+        CHECK(apse::disk_light_pdf<RS>(o, c, n, 1.5, w, m, table, n) == apse::disk_light_pdf<RS>(o, c, n, 1.5f, w, m, table, n));
     }
-    CHECK(apse::sample_disk_light(o, c, n, 1, apse::DiskMap::parallel, u).pdf ==
-          apse::sample_disk_light(o, c, n, 1.0f, apse::DiskMap::parallel, u).pdf);
-    CHECK(apse::disk_light_pdf(o, c, n, 1.5, w) == apse::disk_light_pdf(o, c, n, 1.5f, w));
-    // class template argument deduction: the radius does not take part either
-    const apse::DiskLight light(o, c, n, 1.5);
+    CHECK(RuntimeLight<float>(o, c, n, 1, apse::MapKind::parallel).sample(u).pdf ==
+          RuntimeLight<float>(o, c, n, 1.0f, apse::MapKind::parallel).sample(u).pdf);
+    CHECK(apse::disk_light_pdf<apse::LdRadialMap<float>>(o, c, n, 1.5, w) ==
+          apse::disk_light_pdf<apse::LdRadialMap<float>>(o, c, n, 1.5f, w));
+    // a double radius for a float light: converted (DiskLight<Sampler>'s sampler type is named,
+    // not deduced, so its scalar comes from the sampler); class template argument deduction of
+    // the area sampler: the radius does not take part either
+    const apse::DiskLight<apse::LdRadialMap<float>> light(o, c, n, 1.5);
     const apse::DiskAreaSampler area(o, c, n, 1.5);
-    static_assert(std::is_same<decltype(light), const apse::DiskLight<float>>::value, "float light");
+    static_assert(std::is_same<decltype(light)::T, float>::value, "float light");
     static_assert(std::is_same<decltype(area), const apse::DiskAreaSampler<float>>::value, "float sampler");
-    CHECK(light.pdf(w) == apse::disk_light_pdf(o, c, n, 1.5f, w));
+    CHECK(light.pdf(w) == apse::disk_light_pdf<apse::LdRadialMap<float>>(o, c, n, 1.5f, w));
     CHECK(area.pdf(w) == apse::DiskAreaSampler<float>(o, apse::DiskFrame<float>::make(c, n, 1.5f)).pdf(w));
     CHECK(apse::DiskFrame<float>::make(c, n, 2).radius == 2.0f);
     // double vectors with a float radius: the double overload

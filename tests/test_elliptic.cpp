@@ -2,6 +2,7 @@
 // Carlson's published values, identities, the m = k^2 convention, domain errors and
 // pathological inputs. Every test runs for float and double.
 #include <apse/elliptic.hpp>
+#include <apse/math.hpp>
 
 #include "support/catch.hpp"
 

@@ -5,6 +5,7 @@
 // chi-square test of the accepted directions against the uniform distribution over the disk's
 // solid angle (cells integrated by long-double quadrature, independent of apse).
 #include <apse/baselines/gamito.hpp>
+#include <apse/math.hpp>
 
 #include "support/statistics.hpp"
 

@@ -4,8 +4,10 @@
 // degenerate / bad input.
 #include <apse/maps/ld_radial.hpp>
 #include <apse/maps/parallel.hpp>
-#include <apse/maps/radial.hpp>
+#include <apse/comparison.hpp>
 #include <apse/projection.hpp>
+#include <apse/math.hpp>
+#include <apse/diagnostics.hpp>
 
 #include "support/map_testing.hpp"
 

@@ -4,7 +4,8 @@
 // at the solver's solutions (CDF error), with the solver's iteration statistics.
 #include <apse/maps/ld_radial.hpp>
 #include <apse/maps/parallel.hpp>
-#include <apse/maps/radial.hpp>
+#include <apse/comparison.hpp>
+#include <apse/math.hpp>
 
 #include "support/map_testing.hpp"
 
@@ -128,7 +129,7 @@ TEMPLATE_TEST_CASE("cumulative areas match the references", "[maps][reference]",
     for (const auto& row : read_table("maps/radial_area.txt")) {
         const RefEllipse& r = ells[std::stoi(row[0])];
         const apse::RadialMap<T> map(make_ellipse<T>(r.ta, r.tb));
-        const double err = std::fabs(double(apse::detail::MapAccess::quadrant_area(map, T(num(row[1])))) - num(row[2])) / (r.omega / 4);
+        const double err = std::fabs(double(map.quadrant_area(T(num(row[1])))) - num(row[2])) / (r.omega / 4);
         INFO("ellipse " << row[0] << " phi " << row[1] << " err " << err);
         CHECK(err <= tol);
         worst_r = std::max(worst_r, T(err));
@@ -136,7 +137,7 @@ TEMPLATE_TEST_CASE("cumulative areas match the references", "[maps][reference]",
     for (const auto& row : read_table("maps/parallel_area.txt")) {
         const RefEllipse& r = ells[std::stoi(row[0])];
         const apse::ParallelMap<T> map(make_ellipse<T>(r.ta, r.tb));
-        const double err = std::fabs(double(apse::detail::MapAccess::half_area(map, T(num(row[1])))) - num(row[2])) / (r.omega / 2);
+        const double err = std::fabs(double(map.half_area(T(num(row[1])))) - num(row[2])) / (r.omega / 2);
         INFO("ellipse " << row[0] << " psi " << row[1] << " err " << err);
         CHECK(err <= tol);
         worst_p = std::max(worst_p, T(err));
@@ -199,14 +200,14 @@ TEMPLATE_TEST_CASE("inversion: CDF error and iteration statistics", "[maps][refe
         for (int i = 0; i < n; ++i) {
             const T f = T((i + 0.5) / n);
             int it = 0;
-            const auto rp = apse::detail::MapAccess::solve_quadrant(radial, f, it);
+            const auto rp = radial.solve_quadrant(f, it);
             sum_r += it;
             max_r = std::max(max_r, it);
             // azimuth of the solution: tan phi = (b/a) tan tau
             const LD phi = std::atan2(q.b * LD(rp.st), q.a * LD(rp.ct));
             const double er = double(std::fabs(q.radial(phi) - LD(f) * quarter) / quarter);
             worst_r = std::max(worst_r, er);
-            const auto pp = apse::detail::MapAccess::solve_half(parallel, f, it);
+            const auto pp = parallel.solve_half(f, it);
             sum_p += it;
             max_p = std::max(max_p, it);
             // slice of the solution psi = beta - e, e = 2 atan(t tan(beta/2)); edge area = half - I(psi)

@@ -3,7 +3,7 @@
 // sampler: test_stratification.cpp).
 #include <apse/maps/ld_radial.hpp>
 #include <apse/maps/parallel.hpp>
-#include <apse/maps/radial.hpp>
+#include <apse/comparison.hpp>
 #include <apse/projection.hpp>
 
 #include "support/map_testing.hpp"

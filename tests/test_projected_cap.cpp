@@ -1,4 +1,4 @@
-// Tests of ProjectedCapSampler (projected_cap.hpp), the exact cosine-weighted sampler of spherical
+// Tests of detail::ProjectedCapSampler (projected_cap.hpp), the exact cosine-weighted sampler of spherical
 // caps, and of CosineWeighted<Map> on caps: the density drawn is the reported one (chi-square
 // against cells of the cap integrated by quadrature), the projected solid angle against an
 // independent quadrature (1-D over the azimuth of the exact polar integral of max(0, n·ω) in the
@@ -11,6 +11,7 @@
 
 #include <apse/apse.hpp>
 #include <apse/projected_cap.hpp>
+#include <apse/comparison.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -185,7 +186,7 @@ TEMPLATE_TEST_CASE("projected cap: projected solid angle against quadrature and 
             const double g = gi * (3.14159265358979323846 / 24);
             const auto cap = apse::SphericalEllipse<T>::from_arcs(Vec3<T>(1, 0, 0), Vec3<T>(0, 1, 0), Vec3<T>(0, 0, 1), T(a), T(a));
             const Vec3<T> n(T(std::sin(g)), T(0), T(std::cos(g)));
-            const apse::ProjectedCapSampler<T> s(cap, n);
+            const apse::detail::ProjectedCapSampler<T> s(cap, n);
             const CapGeometry geo = geometry(cap, n);
             const LD sa = std::sin(geo.a);
             const bool below = std::cos(std::acos(geo.nz) - geo.a) <= 0;
@@ -225,7 +226,7 @@ TEMPLATE_TEST_CASE("projected cap: chi-square against the reported pdf, zero var
     for (const Case& c : kCases) {
         const Scene<T> sc = scene<T>(c.distance, c.g);
         REQUIRE(sc.cap.is_cap());
-        const apse::ProjectedCapSampler<T> s(sc.cap, sc.normal);
+        const apse::detail::ProjectedCapSampler<T> s(sc.cap, sc.normal);
         REQUIRE_FALSE(s.empty());
         const CapGeometry geo = geometry(sc.cap, sc.normal);
         const LD omc = 2 * std::sin(geo.a / 2) * std::sin(geo.a / 2);  // 1 − cos a
@@ -299,7 +300,7 @@ TEMPLATE_TEST_CASE("projected cap: pdf(sample) is the reported pdf, sample(inver
         }
 #endif
         const Scene<T> sc = scene<T>(c.distance, c.g);
-        const apse::ProjectedCapSampler<T> s(sc.cap, sc.normal);
+        const apse::detail::ProjectedCapSampler<T> s(sc.cap, sc.normal);
         const double sa = std::sin(double(geometry(sc.cap, sc.normal).a));
         const glm::dvec3 nd = glm::normalize(glm::dvec3(sc.normal));
         double worst_pdf = 0, worst_dir = 0, worst_u = 0;
@@ -334,7 +335,7 @@ TEMPLATE_TEST_CASE("projected cap: continuous in u, across y = ±y_t and across 
     // is continuous, no seam; y_t is crossed twice), for caps cut with the centre above and below
     for (double g : {1.4, 1.8}) {
         const Scene<T> sc = scene<T>(3.0, g);
-        const apse::ProjectedCapSampler<T> s(sc.cap, sc.normal);
+        const apse::detail::ProjectedCapSampler<T> s(sc.cap, sc.normal);
         REQUIRE(s.cut());
         for (double u2 : {0.0, 0.3, 0.97}) {
             double worst = 0;
@@ -359,8 +360,8 @@ TEMPLATE_TEST_CASE("projected cap: continuous in u, across y = ±y_t and across 
         const auto cap = apse::SphericalEllipse<T>::from_arcs(Vec3<T>(1, 0, 0), Vec3<T>(0, 1, 0), Vec3<T>(0, 0, 1), T(a), T(a));
         const double h = sizeof(T) == 4 ? 1e-4 : 1e-9;
         for (double g0 : {kHalfPi - double(std::atan(LD(cap.tan_alpha))), kHalfPi}) {
-            const apse::ProjectedCapSampler<T> lo(cap, Vec3<T>(T(std::sin(g0 - h)), T(0), T(std::cos(g0 - h))));
-            const apse::ProjectedCapSampler<T> hi(cap, Vec3<T>(T(std::sin(g0 + h)), T(0), T(std::cos(g0 + h))));
+            const apse::detail::ProjectedCapSampler<T> lo(cap, Vec3<T>(T(std::sin(g0 - h)), T(0), T(std::cos(g0 - h))));
+            const apse::detail::ProjectedCapSampler<T> hi(cap, Vec3<T>(T(std::sin(g0 + h)), T(0), T(std::cos(g0 + h))));
             INFO(type_name<T>() << " g0 " << g0 << ": " << lo.projected_solid_angle() << " " << hi.projected_solid_angle());
             // dOmega/dg is at most ~2 sin a: the change over 2h is below 2h relative to Omega ~ 0.1 here
             CHECK(std::fabs(double(lo.projected_solid_angle() - hi.projected_solid_angle())) <= 20 * h * double(lo.projected_solid_angle()) + 16 * eps<T>());
@@ -395,7 +396,7 @@ TEMPLATE_TEST_CASE("projected cap: CosineWeighted<every map> on a cap is Project
     using T = TestType;
     for (double g : {0.5, 1.4, 1.8}) {
         const Scene<T> sc = scene<T>(3.0, g);
-        const apse::ProjectedCapSampler<T> ref(sc.cap, sc.normal);
+        const apse::detail::ProjectedCapSampler<T> ref(sc.cap, sc.normal);
         for_each_cosine_map(sc.cap, sc.normal, [&](const char* name, const auto& cw, const auto& built) {
             INFO(type_name<T>() << " " << name << " g " << g);
             CHECK(cw.exact_cap());
@@ -444,15 +445,15 @@ TEMPLATE_TEST_CASE("projected cap: bad input", "[cosine][cap][robust]", float, d
     // not a cap: an ellipse, the empty ellipse; a zero, NaN or infinite normal; below the horizon
     const auto ellipse = apse::SphericalEllipse<T>::from_tangents(sc.cap.x, sc.cap.y, sc.cap.z, T(0.4), T(0.3));
     const Vec3<T> n = sc.normal;
-    const apse::ProjectedCapSampler<T> bad[] = {
-        apse::ProjectedCapSampler<T>(),
-        apse::ProjectedCapSampler<T>(ellipse, n),
-        apse::ProjectedCapSampler<T>(apse::SphericalEllipse<T>::make_empty(), n),
-        apse::ProjectedCapSampler<T>(sc.cap, Vec3<T>(T(0))),
-        apse::ProjectedCapSampler<T>(sc.cap, Vec3<T>(nan, T(0), T(1))),
-        apse::ProjectedCapSampler<T>(sc.cap, Vec3<T>(inf, T(0), T(1))),
-        apse::ProjectedCapSampler<T>(sc.cap, -sc.cap.z),
-        apse::ProjectedCapSampler<T>(scene<T>(3.0, 2.5).cap, scene<T>(3.0, 2.5).normal),
+    const apse::detail::ProjectedCapSampler<T> bad[] = {
+        apse::detail::ProjectedCapSampler<T>(),
+        apse::detail::ProjectedCapSampler<T>(ellipse, n),
+        apse::detail::ProjectedCapSampler<T>(apse::SphericalEllipse<T>::make_empty(), n),
+        apse::detail::ProjectedCapSampler<T>(sc.cap, Vec3<T>(T(0))),
+        apse::detail::ProjectedCapSampler<T>(sc.cap, Vec3<T>(nan, T(0), T(1))),
+        apse::detail::ProjectedCapSampler<T>(sc.cap, Vec3<T>(inf, T(0), T(1))),
+        apse::detail::ProjectedCapSampler<T>(sc.cap, -sc.cap.z),
+        apse::detail::ProjectedCapSampler<T>(scene<T>(3.0, 2.5).cap, scene<T>(3.0, 2.5).normal),
     };
     for (const auto& s : bad) {
         CHECK(s.empty());
@@ -464,7 +465,7 @@ TEMPLATE_TEST_CASE("projected cap: bad input", "[cosine][cap][robust]", float, d
     // a valid sampler: NaN u, outside the square, zero/NaN/outside directions
     for (double g : {0.5, 1.4}) {
         const Scene<T> sg = scene<T>(3.0, g);
-        const apse::ProjectedCapSampler<T> s(sg.cap, sg.normal);
+        const apse::detail::ProjectedCapSampler<T> s(sg.cap, sg.normal);
         REQUIRE_FALSE(s.empty());
         for (const Vec2<T>& u : {Vec2<T>(nan, T(0.5)), Vec2<T>(T(0.5), nan)}) {
             const auto d = s.sample(u);
@@ -484,10 +485,10 @@ TEMPLATE_TEST_CASE("projected cap: bad input", "[cosine][cap][robust]", float, d
         CHECK(v.y <= T(1));
         // a scaled direction and normal give the same results
         CHECK(std::fabs(double(s.pdf(T(5) * sg.cap.z) / s.pdf(sg.cap.z)) - 1) <= 4 * eps<T>());  // normalisation's rounding
-        const apse::ProjectedCapSampler<T> scaled(sg.cap, T(1e3) * sg.normal);
+        const apse::detail::ProjectedCapSampler<T> scaled(sg.cap, T(1e3) * sg.normal);
         CHECK(std::fabs(double(scaled.projected_solid_angle() / s.projected_solid_angle()) - 1) <= 8 * eps<T>());  // the normal's rounding
     }
-    static_assert(std::is_trivially_copyable<apse::ProjectedCapSampler<T>>::value, "pass it to kernels by value");
+    static_assert(std::is_trivially_copyable<apse::detail::ProjectedCapSampler<T>>::value, "pass it to kernels by value");
 }
 
 TEMPLATE_TEST_CASE("projected cap: extreme normals (tiny, huge, subnormal components, cos g or sin g 0 or subnormal)",
@@ -513,7 +514,7 @@ TEMPLATE_TEST_CASE("projected cap: extreme normals (tiny, huge, subnormal compon
                           Vec2<T>(T(0.5), 0), Vec2<T>(0, T(0.5)), Vec2<T>(T(1e-7), T(0.999)), Vec2<T>(T(0.9999999), T(0.25))};
     int bad_direction = 0, bad_pdf = 0, bad_invert = 0, sampled = 0;
     auto run = [&](const apse::SphericalEllipse<T>& cap, const Vec3<T>& n) {
-        const apse::ProjectedCapSampler<T> s(cap, n);
+        const apse::detail::ProjectedCapSampler<T> s(cap, n);
         const double psa = double(s.projected_solid_angle());
         if (!(std::isfinite(psa) && psa >= 0)) ++bad_pdf;
         // the unit normal in long double (scaled by its largest component first)

@@ -3,6 +3,7 @@
 // solid angle against an independent brute-force integral over the disk, contains() against
 // ray–shape intersections, disk ≡ ellipse, scale invariance, and degenerate input.
 #include <apse/projection.hpp>
+#include <apse/math.hpp>
 
 #include "support/catch.hpp"
 

@@ -6,6 +6,7 @@
 // float32-exact, but forming the plane's normal and the offset corner − o in T rounds them by
 // O(eps) relative to those lengths, which moves the solid angle by O(eps·kappa).
 #include <apse/spherical_rectangle.hpp>
+#include <apse/math.hpp>
 
 #include "support/statistics.hpp"
 

@@ -1,17 +1,26 @@
 // The sampler concept (docs/usage.md, "The sampler concept"), checked for every sampler in float and
-// double: what each one must provide (compile time: member functions, their return types and
+// double — the maps, CosineWeighted over each, RuntimeSampler (each MapKind, plain and cosine),
+// DiskLight<Sampler> over each map and CosineWeighted map and over RuntimeSampler, the baselines:
+// what each one must provide (compile time: member functions, their return types and
 // noexcept, trivially copyable samplers and results, which samplers have invert() and
-// solid_angle() and which count iterations — the table of docs/usage.md), and how the members must agree
+// solid_angle() and which count iterations — the table of docs/usage.md — and which expose the
+// maps' building blocks), and how the members must agree
 // (run time): empty() false for a normal light and true for degenerate ones, pdf 0 everywhere
 // when empty, samples inside the light with pdf(sample) = the reported pdf, invert(sample(u)) = u,
 // solid_angle() against references independent of apse (mpmath table, closed form),
-// sample_with_diagnostics identical to sample, and point_on_plane's points on the light.
+// sample_with_diagnostics and the maps' sample_counted identical to sample, and point_on_plane's
+// points on the light.
 
 #include "support/catch.hpp"
 
 #include <apse/apse.hpp>
 #include <apse/baselines/area.hpp>
 #include <apse/baselines/gamito.hpp>
+#include <apse/math.hpp>
+#include <apse/spherical_rectangle.hpp>
+#include <apse/diagnostics.hpp>
+#include <apse/comparison.hpp>
+#include <apse/runtime_sampler.hpp>
 
 #include <cmath>
 #include <cstdio>
@@ -73,28 +82,37 @@ template <class T> apse::SphericalEllipse<T> ellipse_of(const Scene<T>& s) { ret
 
 enum class Shape { disk, square };
 
+/// The maps' building blocks a sampler has as public members (docs/math.md §4–§6): the local
+/// coordinates of a direction (RadialMap, TabulatedMap), the cumulative areas (RadialMap's
+/// quadrant_area, ParallelMap's half_area). A bit mask; none for every other sampler.
+enum Blocks : int { no_blocks = 0, local_coords = 1, quadrant = 2, half = 4 };
+
 struct Radial {
     static constexpr const char* name = "RadialMap";
     static constexpr bool invertible = true, has_solid_angle = true, counts = true;
     static constexpr Shape shape = Shape::disk;
+    static constexpr int blocks = local_coords | quadrant;
     template <class T> static auto make(const Scene<T>& s) { return apse::RadialMap<T>(ellipse_of(s)); }
 };
 struct LdRadial {
     static constexpr const char* name = "LdRadialMap";
     static constexpr bool invertible = true, has_solid_angle = true, counts = true;
     static constexpr Shape shape = Shape::disk;
+    static constexpr int blocks = no_blocks;
     template <class T> static auto make(const Scene<T>& s) { return apse::LdRadialMap<T>(ellipse_of(s)); }
 };
 struct Parallel {
     static constexpr const char* name = "ParallelMap";
     static constexpr bool invertible = true, has_solid_angle = true, counts = true;
     static constexpr Shape shape = Shape::disk;
+    static constexpr int blocks = half;
     template <class T> static auto make(const Scene<T>& s) { return apse::ParallelMap<T>(ellipse_of(s)); }
 };
 struct Tabulated {  // no solid_angle(): the tabulated maps never compute Omega (docs/usage.md)
     static constexpr const char* name = "TabulatedMap";
     static constexpr bool invertible = true, has_solid_angle = false, counts = true;
     static constexpr Shape shape = Shape::disk;
+    static constexpr int blocks = local_coords;
     template <class T> static auto make(const Scene<T>& s) {
         return apse::TabulatedMap<T>(ellipse_of(s), apse_test::default_table().view());
     }
@@ -103,6 +121,7 @@ struct TabulatedLdRadial {
     static constexpr const char* name = "TabulatedLdRadialMap";
     static constexpr bool invertible = true, has_solid_angle = false, counts = true;
     static constexpr Shape shape = Shape::disk;
+    static constexpr int blocks = no_blocks;
     template <class T> static auto make(const Scene<T>& s) {
         return apse::TabulatedLdRadialMap<T>(ellipse_of(s), apse_test::default_table().view());
     }
@@ -111,6 +130,7 @@ template <class Plain> struct Cosine {  // CosineWeighted over a map, with the s
     static constexpr const char* name = "CosineWeighted";
     static constexpr bool invertible = true, has_solid_angle = false, counts = false;
     static constexpr Shape shape = Shape::disk;
+    static constexpr int blocks = no_blocks;
     template <class T> static auto make(const Scene<T>& s) {
         using Map = decltype(Plain::make(s));
         return apse::CosineWeighted<Map>(Plain::make(s), s.receiver);
@@ -120,6 +140,7 @@ struct Area {  // from the light's stored frame
     static constexpr const char* name = "DiskAreaSampler(o, frame)";
     static constexpr bool invertible = true, has_solid_angle = false, counts = false;
     static constexpr Shape shape = Shape::disk;
+    static constexpr int blocks = no_blocks;
     template <class T> static auto make(const Scene<T>& s) {
         return apse::DiskAreaSampler<T>(s.o, apse::DiskFrame<T>::make(s.c, s.n, s.r));
     }
@@ -128,36 +149,112 @@ struct AreaDirect {  // the convenience constructor
     static constexpr const char* name = "DiskAreaSampler(o, c, n, r)";
     static constexpr bool invertible = true, has_solid_angle = false, counts = false;
     static constexpr Shape shape = Shape::disk;
+    static constexpr int blocks = no_blocks;
     template <class T> static auto make(const Scene<T>& s) { return apse::DiskAreaSampler<T>(s.o, s.c, s.n, s.r); }
 };
 struct GamitoSingle {  // no invert(): rejection is not a bijection; no solid_angle(): never computed
     static constexpr const char* name = "GamitoSingleShot";
     static constexpr bool invertible = false, has_solid_angle = false, counts = false;
     static constexpr Shape shape = Shape::disk;
+    static constexpr int blocks = no_blocks;
     template <class T> static auto make(const Scene<T>& s) { return apse::GamitoSingleShot<T>(s.o, s.c, s.n, s.r); }
 };
 struct GamitoRetry {
     static constexpr const char* name = "GamitoRetry";
     static constexpr bool invertible = false, has_solid_angle = true, counts = false;
     static constexpr Shape shape = Shape::disk;
+    static constexpr int blocks = no_blocks;
     template <class T> static auto make(const Scene<T>& s) { return apse::GamitoRetry<T>(s.o, s.c, s.n, s.r, 8); }
 };
 struct Rectangle {  // the disk's circumscribed square
     static constexpr const char* name = "SphericalRectangle";
     static constexpr bool invertible = true, has_solid_angle = true, counts = false;
     static constexpr Shape shape = Shape::square;
+    static constexpr int blocks = no_blocks;
     template <class T> static auto make(const Scene<T>& s) {
         return apse::SphericalRectangle<T>::from_center(s.o, s.c, V3<T>(s.r, 0, 0), V3<T>(0, s.r, 0));
     }
 };
 
-template <apse::DiskMap M, bool Cosine> struct Light {  // DiskLight, plain or with the receiver's normal
-    static constexpr const char* name = "DiskLight";
+/// The printed names of the samplers over each map (in MapKind's order), plain and cosine-weighted.
+constexpr const char* runtime_names[5][2] = {
+    {"RuntimeSampler radial", "RuntimeSampler radial, cosine"},
+    {"RuntimeSampler ld_radial", "RuntimeSampler ld_radial, cosine"},
+    {"RuntimeSampler parallel", "RuntimeSampler parallel, cosine"},
+    {"RuntimeSampler tabulated", "RuntimeSampler tabulated, cosine"},
+    {"RuntimeSampler tabulated_ld", "RuntimeSampler tabulated_ld, cosine"}};
+constexpr const char* runtime_light_names[5][2] = {
+    {"DiskLight<Runtime> radial", "DiskLight<Runtime> radial, cosine"},
+    {"DiskLight<Runtime> ld_radial", "DiskLight<Runtime> ld_radial, cosine"},
+    {"DiskLight<Runtime> parallel", "DiskLight<Runtime> parallel, cosine"},
+    {"DiskLight<Runtime> tabulated", "DiskLight<Runtime> tabulated, cosine"},
+    {"DiskLight<Runtime> tabulated_ld", "DiskLight<Runtime> tabulated_ld, cosine"}};
+template <template <class> class Map> struct typed_light_names;  // [cosine][framed]
+template <> struct typed_light_names<apse::RadialMap> {
+    static constexpr const char* value[2][2] = {{"DiskLight<RadialMap>", "DiskLight<RadialMap>(frame)"},
+                                                {"DiskLight<Cosine<RadialMap>>", "DiskLight<Cosine<RadialMap>>(frame)"}};
+};
+template <> struct typed_light_names<apse::LdRadialMap> {
+    static constexpr const char* value[2][2] = {{"DiskLight<LdRadialMap>", "DiskLight<LdRadialMap>(frame)"},
+                                                {"DiskLight<Cosine<LdRadialMap>>", "DiskLight<Cosine<LdRadialMap>>(frame)"}};
+};
+template <> struct typed_light_names<apse::ParallelMap> {
+    static constexpr const char* value[2][2] = {{"DiskLight<ParallelMap>", "DiskLight<ParallelMap>(frame)"},
+                                                {"DiskLight<Cosine<ParallelMap>>", "DiskLight<Cosine<ParallelMap>>(frame)"}};
+};
+template <> struct typed_light_names<apse::TabulatedMap> {
+    static constexpr const char* value[2][2] = {{"DiskLight<TabulatedMap>", "DiskLight<TabulatedMap>(frame)"},
+                                                {"DiskLight<Cosine<TabulatedMap>>", "DiskLight<Cosine<TabulatedMap>>(frame)"}};
+};
+template <> struct typed_light_names<apse::TabulatedLdRadialMap> {
+    static constexpr const char* value[2][2] = {{"DiskLight<TabLdRadialMap>", "DiskLight<TabLdRadialMap>(frame)"},
+                                                {"DiskLight<Cosine<TabLdRadial>>", "DiskLight<Cosine<TabLdRadial>>(frame)"}};
+};
+
+/// The map chosen at run time (runtime_sampler.hpp), plain or with the scene's receiver normal;
+/// the tabulated kinds read the default table.
+template <apse::MapKind K, bool Cosine> struct Runtime {
+    static constexpr const char* name = runtime_names[int(K)][Cosine];
+    static constexpr bool invertible = true, has_solid_angle = false, counts = false;
+    static constexpr Shape shape = Shape::disk;
+    static constexpr int blocks = no_blocks;
+    template <class T> static auto make(const Scene<T>& s) {
+        if constexpr (Cosine) return apse::RuntimeSampler<T>(ellipse_of(s), K, apse_test::default_table().view(), s.receiver);
+        else return apse::RuntimeSampler<T>(ellipse_of(s), K, apse_test::default_table().view());
+    }
+};
+
+/// DiskLight<RuntimeSampler>: the map chosen at run time, plain or with the receiver's normal
+/// (the tabulated kinds read the default table).
+template <apse::MapKind K, bool Cosine> struct Light {
+    static constexpr const char* name = runtime_light_names[int(K)][Cosine];
     static constexpr bool invertible = true, has_solid_angle = true, counts = false;
     static constexpr Shape shape = Shape::disk;
+    static constexpr int blocks = no_blocks;
     template <class T> static auto make(const Scene<T>& s) {
-        if constexpr (Cosine) return apse::DiskLight<T>(s.o, s.c, s.n, s.r, M, s.receiver);
-        else return apse::DiskLight<T>(s.o, s.c, s.n, s.r, M);
+        using L = apse::DiskLight<apse::RuntimeSampler<T>>;
+        if constexpr (Cosine) return L(s.o, s.c, s.n, s.r, K, apse_test::default_table().view(), s.receiver);
+        else return L(s.o, s.c, s.n, s.r, K, apse_test::default_table().view());
+    }
+};
+
+/// DiskLight over the map Map chosen at compile time (Tab: it reads the default table), plain or
+/// CosineWeighted<Map> with the receiver's normal; from (c, n, r) or from the stored DiskFrame.
+template <template <class> class Map, bool Tab, bool Cosine, bool Framed = false> struct TypedLight {
+    static constexpr const char* name = typed_light_names<Map>::value[Cosine][Framed];
+    static constexpr bool invertible = true, has_solid_angle = true, counts = false;
+    static constexpr Shape shape = Shape::disk;
+    static constexpr int blocks = no_blocks;
+    template <class T, class... Args> static auto light(const Scene<T>& s, const Args&... args) {
+        using S = std::conditional_t<Cosine, apse::CosineWeighted<Map<T>>, Map<T>>;
+        if constexpr (Framed) return apse::DiskLight<S>(s.o, apse::DiskFrame<T>::make(s.c, s.n, s.r), args...);
+        else return apse::DiskLight<S>(s.o, s.c, s.n, s.r, args...);
+    }
+    template <class T> static auto make(const Scene<T>& s) {
+        if constexpr (Tab && Cosine) return light(s, apse_test::default_table().view(), s.receiver);
+        else if constexpr (Tab) return light(s, apse_test::default_table().view());
+        else if constexpr (Cosine) return light(s, s.receiver);
+        else return light(s);
     }
 };
 
@@ -171,8 +268,10 @@ template <class S, class = void> struct has_solid_angle : std::false_type {};
 template <class S>
 struct has_solid_angle<S, std::void_t<decltype(std::declval<const S&>().solid_angle())>> : std::true_type {};
 
-// The maps' building blocks (local frame, cumulative areas, the inversion's pieces) are private,
-// reached by apse itself and its tests through apse::detail::MapAccess: no sampler exposes them.
+// The maps' building blocks (local frame, cumulative areas, the inversion's pieces) are public
+// members of the maps that have them (F::blocks), for apse's compositions and the tests; no
+// other sampler — CosineWeighted, RuntimeSampler, DiskLight, the baselines — exposes them, and no
+// sampler exposes its stored areas or kappa.
 template <class S, class = void> struct exposes_local_coordinates : std::false_type {};
 template <class S>
 struct exposes_local_coordinates<S, std::void_t<decltype(std::declval<const S&>().local_coordinates(
@@ -220,9 +319,11 @@ template <class F, class T> constexpr bool static_checks() {
         static_assert(std::is_same<decltype(std::declval<const S&>().solid_angle()), T>::value, "solid_angle() -> T");
         static_assert(noexcept(std::declval<const S&>().solid_angle()), "solid_angle is noexcept");
     }
-    static_assert(!exposes_local_coordinates<S>::value && !exposes_areas<S>::value && !exposes_kappa<S>::value &&
-                      !exposes_quadrant_area<S, T>::value && !exposes_half_area<S, T>::value,
-                  "the maps' building blocks are not public (apse::detail::MapAccess)");
+    static_assert(exposes_local_coordinates<S>::value == bool(F::blocks & local_coords) &&
+                      exposes_quadrant_area<S, T>::value == bool(F::blocks & quadrant) &&
+                      exposes_half_area<S, T>::value == bool(F::blocks & half),
+                  "the maps' building blocks are public on the maps that have them, on no other sampler");
+    static_assert(!exposes_areas<S>::value && !exposes_kappa<S>::value, "no sampler exposes its stored areas or kappa");
     // diagnostics: one free function for every sampler, the same result type as sample()
     static_assert(apse::counts_iterations_v<S> == F::counts, "the maps count their iterations, no other sampler");
     apse::SampleDiagnostics* diag = nullptr;
@@ -313,6 +414,14 @@ template <class F, class T> void check_normal() {
             CHECK(same.direction == smp.direction);
             CHECK(diag.iterations >= 0);
             CHECK(diag.iterations <= (F::counts ? apse::detail::max_area_iterations : 0));
+            if constexpr (F::counts) {
+                // the public counting member: the same sample and count as sample_with_diagnostics
+                int iterations = -1;
+                const auto counted = s.sample_counted(u, iterations);
+                CHECK(counted.pdf == smp.pdf);
+                CHECK(counted.direction == smp.direction);
+                CHECK(iterations == diag.iterations);
+            }
             CHECK(apse::detail::is_finite(smp.pdf));
             CHECK(std::fabs(double(glm::length(smp.direction)) - 1) <= Budget<T>::on_light);
             if constexpr (std::is_base_of<apse::PointSample<T>, decltype(smp)>::value) {
@@ -335,7 +444,7 @@ template <class F, class T> void check_normal() {
     CHECK(accepted >= (std::string(F::name) == "GamitoSingleShot" ? 25 : 49));
     CHECK(worst_pdf <= Budget<T>::pdf);
     CHECK(worst_u <= Budget<T>::round_trip);
-    std::printf("[%s] %-28s accepted %2d/49, max |pdf(sample)/pdf - 1| %.1e, max |invert(sample(u)) - u| %.1e\n",
+    std::printf("[%s] %-42s accepted %2d/49, max |pdf(sample)/pdf - 1| %.1e, max |invert(sample(u)) - u| %.1e\n",
                 sizeof(T) == 4 ? "float" : "double", F::name, accepted, worst_pdf, worst_u);
     // away from the light: density 0
     CHECK(s.pdf(V3<T>(0, 0, 1)) == T(0));
@@ -393,18 +502,66 @@ TEMPLATE_TEST_CASE("sampler concept: the baselines", "[concept]", float, double)
     check_sampler<Rectangle, TestType>();
 }
 
-TEMPLATE_TEST_CASE("sampler concept: DiskLight, each map, plain and cosine-weighted", "[concept]", float, double) {
+TEMPLATE_TEST_CASE("sampler concept: RuntimeSampler, each map, plain and cosine-weighted", "[concept]", float, double) {
     using T = TestType;
-    static_assert(std::is_same<decltype(std::declval<const apse::DiskLight<T>&>().sample(std::declval<const V2<T>&>())),
+    using K = apse::MapKind;
+    check_sampler<Runtime<K::radial, false>, T>();
+    check_sampler<Runtime<K::ld_radial, false>, T>();
+    check_sampler<Runtime<K::parallel, false>, T>();
+    check_sampler<Runtime<K::tabulated, false>, T>();
+    check_sampler<Runtime<K::tabulated_ld_radial, false>, T>();
+    check_sampler<Runtime<K::radial, true>, T>();
+    check_sampler<Runtime<K::ld_radial, true>, T>();
+    check_sampler<Runtime<K::parallel, true>, T>();
+    check_sampler<Runtime<K::tabulated, true>, T>();
+    check_sampler<Runtime<K::tabulated_ld_radial, true>, T>();
+    check_degenerate<Runtime<K::ld_radial, true>, T>(Degenerate::behind);  // below the receiver's horizon
+    check_degenerate<Runtime<K::tabulated_ld_radial, true>, T>(Degenerate::behind);
+}
+
+TEMPLATE_TEST_CASE("sampler concept: DiskLight<RuntimeSampler>, each map, plain and cosine-weighted", "[concept]", float,
+                   double) {
+    using T = TestType;
+    using K = apse::MapKind;
+    static_assert(std::is_same<decltype(std::declval<const apse::DiskLight<apse::RuntimeSampler<T>>&>().sample(
+                                   std::declval<const V2<T>&>())),
                                apse::PointSample<T>>::value,
                   "DiskLight::sample -> PointSample");
-    check_sampler<Light<apse::DiskMap::radial, false>, T>();
-    check_sampler<Light<apse::DiskMap::ld_radial, false>, T>();
-    check_sampler<Light<apse::DiskMap::parallel, false>, T>();
-    check_sampler<Light<apse::DiskMap::radial, true>, T>();
-    check_sampler<Light<apse::DiskMap::ld_radial, true>, T>();
-    check_sampler<Light<apse::DiskMap::parallel, true>, T>();
-    check_degenerate<Light<apse::DiskMap::ld_radial, true>, T>(Degenerate::behind);  // below the receiver's horizon
+    check_sampler<Light<K::radial, false>, T>();
+    check_sampler<Light<K::ld_radial, false>, T>();
+    check_sampler<Light<K::parallel, false>, T>();
+    check_sampler<Light<K::tabulated, false>, T>();
+    check_sampler<Light<K::tabulated_ld_radial, false>, T>();
+    check_sampler<Light<K::radial, true>, T>();
+    check_sampler<Light<K::ld_radial, true>, T>();
+    check_sampler<Light<K::parallel, true>, T>();
+    check_sampler<Light<K::tabulated, true>, T>();
+    check_sampler<Light<K::tabulated_ld_radial, true>, T>();
+    check_degenerate<Light<K::ld_radial, true>, T>(Degenerate::behind);  // below the receiver's horizon
+}
+
+TEMPLATE_TEST_CASE("sampler concept: DiskLight<Sampler>, each map, plain and cosine-weighted", "[concept]", float, double) {
+    using T = TestType;
+    static_assert(std::is_same<decltype(std::declval<const apse::DiskLight<apse::LdRadialMap<T>>&>().sample(
+                                   std::declval<const V2<T>&>())),
+                               apse::PointSample<T>>::value,
+                  "DiskLight::sample -> PointSample");
+    check_sampler<TypedLight<apse::RadialMap, false, false>, T>();
+    check_sampler<TypedLight<apse::LdRadialMap, false, false>, T>();
+    check_sampler<TypedLight<apse::ParallelMap, false, false>, T>();
+    check_sampler<TypedLight<apse::TabulatedMap, true, false>, T>();
+    check_sampler<TypedLight<apse::TabulatedLdRadialMap, true, false>, T>();
+    check_sampler<TypedLight<apse::RadialMap, false, true>, T>();
+    check_sampler<TypedLight<apse::LdRadialMap, false, true>, T>();
+    check_sampler<TypedLight<apse::ParallelMap, false, true>, T>();
+    check_sampler<TypedLight<apse::TabulatedMap, true, true>, T>();
+    check_sampler<TypedLight<apse::TabulatedLdRadialMap, true, true>, T>();
+    // from the light's stored frame
+    check_sampler<TypedLight<apse::LdRadialMap, false, false, true>, T>();
+    check_sampler<TypedLight<apse::TabulatedLdRadialMap, true, true, true>, T>();
+    // below the receiver's horizon
+    check_degenerate<TypedLight<apse::LdRadialMap, false, true>, T>(Degenerate::behind);
+    check_degenerate<TypedLight<apse::TabulatedLdRadialMap, true, true>, T>(Degenerate::behind);
 }
 
 TEMPLATE_TEST_CASE("sampler concept: point_on_plane completes a direction sample", "[concept]", float, double) {

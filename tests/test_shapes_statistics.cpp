@@ -7,8 +7,8 @@
 // converges to the quadrature reference.
 #include <apse/maps/ld_radial.hpp>
 #include <apse/maps/parallel.hpp>
-#include <apse/maps/radial.hpp>
-#include <apse/maps/tabulated.hpp>
+#include <apse/comparison.hpp>
+#include <apse/maps/tabulated_ld_radial.hpp>
 #include <apse/projection.hpp>
 
 #include "support/cone_cells.hpp"

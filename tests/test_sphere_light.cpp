@@ -6,8 +6,9 @@
 #include <apse/cosine_weighted.hpp>
 #include <apse/maps/ld_radial.hpp>
 #include <apse/maps/parallel.hpp>
-#include <apse/maps/radial.hpp>
-#include <apse/maps/tabulated.hpp>
+#include <apse/comparison.hpp>
+#include <apse/maps/tabulated_ld_radial.hpp>
+#include <apse/math.hpp>
 
 #include "support/default_table.hpp"
 #include "support/map_testing.hpp"

@@ -2,6 +2,7 @@
 // committed mpmath table (tests/data/projection/solid_angle.csv, tools/gen_projection_reference.py),
 // closed-form limits, contains(), frame transforms.
 #include <apse/spherical_ellipse.hpp>
+#include <apse/math.hpp>
 
 #include "support/catch.hpp"
 

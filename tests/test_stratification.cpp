@@ -5,8 +5,8 @@
 #include <apse/baselines/gamito.hpp>
 #include <apse/maps/ld_radial.hpp>
 #include <apse/maps/parallel.hpp>
-#include <apse/maps/radial.hpp>
-#include <apse/maps/tabulated.hpp>
+#include <apse/comparison.hpp>
+#include <apse/maps/tabulated_ld_radial.hpp>
 #include <apse/projection.hpp>
 
 #include "support/map_testing.hpp"

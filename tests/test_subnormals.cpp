@@ -15,6 +15,7 @@
 
 #include <apse/apse.hpp>
 #include <apse/baselines/area.hpp>
+#include <apse/comparison.hpp>
 
 #include "support/default_table.hpp"
 

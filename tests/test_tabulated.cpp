@@ -5,8 +5,10 @@
 // * Monte Carlo unbiasedness: E[1/pdf] = Omega and E[cos/pdf] = int cos dw (independent quadrature);
 // * max |pdf Omega − 1| of the default table over shapes from tiny to hemispherical and thin;
 // * sample/pdf consistency, samples inside the ellipse, invert/sample round trip, degenerate input.
-#include <apse/maps/tabulated.hpp>
+#include <apse/comparison.hpp>
+#include <apse/maps/tabulated_ld_radial.hpp>
 #include <apse/projection.hpp>
+#include <apse/diagnostics.hpp>
 
 #include "support/default_table.hpp"
 #include "support/map_testing.hpp"

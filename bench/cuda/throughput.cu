@@ -13,6 +13,8 @@
 #include <apse/apse.hpp>
 #include <apse/baselines/area.hpp>
 #include <apse/baselines/gamito.hpp>
+#include <apse/comparison.hpp>
+#include <apse/runtime_sampler.hpp>
 
 #include "../support/disk_configs.hpp"
 #include "../support/sphere_configs.hpp"
@@ -63,9 +65,10 @@ APSE_BENCH_KIND(BCosLd, "CosineWeighted<LdRadialMap>",
                 apse::CosineWeighted<apse::LdRadialMap<T>>(apse::project_disk(d.o, d.frame), d.half_y))
 APSE_BENCH_KIND(BCosTabulatedLd, "CosineWeighted<TabulatedLdRadialMap>",
                 apse::CosineWeighted<apse::TabulatedLdRadialMap<T>>(apse::project_disk(d.o, d.frame), in.table, d.half_y))
-APSE_BENCH_KIND(BDiskLight, "DiskLight (ld_radial, stored DiskFrame)", apse::DiskLight<T>(d.o, d.frame, apse::DiskMap::ld_radial))
-APSE_BENCH_KIND(BDiskLightTab, "DiskLight (tabulated_ld_radial)",
-                apse::DiskLight<T>(d.o, d.frame, apse::DiskMap::tabulated_ld_radial, in.table))
+APSE_BENCH_KIND(BDiskLight, "DiskLight<RuntimeSampler> (ld_radial, stored DiskFrame)",
+                apse::DiskLight<apse::RuntimeSampler<T>>(d.o, d.frame, apse::MapKind::ld_radial))
+APSE_BENCH_KIND(BDiskLightTab, "DiskLight<RuntimeSampler> (tabulated_ld_radial)",
+                apse::DiskLight<apse::RuntimeSampler<T>>(d.o, d.frame, apse::MapKind::tabulated_ld_radial, in.table))
 APSE_BENCH_KIND(BGamitoRetry, "GamitoRetry(8)", apse::GamitoRetry<T>(d.o, d.c, d.n, d.r, 8))
 APSE_BENCH_KIND(BSphereLd, "SphereLight<LdRadialMap>", apse::SphereLight<apse::LdRadialMap<T>>(s.o, s.c, s.r))
 APSE_BENCH_KIND(BSphereCosLd, "SphereLight<CosineWeighted<LdRadialMap>> (mixed)",

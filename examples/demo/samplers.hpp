@@ -15,6 +15,7 @@
 #include <apse/apse.hpp>
 #include <apse/baselines/area.hpp>
 #include <apse/baselines/gamito.hpp>
+#include <apse/comparison.hpp>
 
 // pbrt-v4's uniform cone sampling of sphere lights, the reference apse's benchmarks use too.
 #include "../../bench/support/cone_sampler.hpp"
@@ -69,8 +70,9 @@ inline std::vector<Kind> sphere_kinds() {
     return {Kind::cone, Kind::ld_radial, Kind::parallel, Kind::tabulated, Kind::cosine};
 }
 
-/// Wraps a sampler with `sample(u) -> DirectionSample<float>` into LightSample (the point where
-/// the sample's ray meets the disk's plane, apse::point_on_plane, the same for every sampler).
+/// Wraps a baseline sampler with `sample(u) -> DirectionSample<float>` into LightSample (the point
+/// where the sample's ray meets the disk's plane, apse::point_on_plane, as DiskLight does for the
+/// maps).
 template <class S> struct Wrapped {
     S s;
     vec3 o, center, normal;
@@ -93,15 +95,14 @@ struct GamitoFactory {  // Gamito's single shot (the paper's baseline), unbiased
 };
 template <class Map> struct MapFactory {
     auto operator()(const vec3& o, const vec3&, const Disk& L) const {
-        return wrap(Map(apse::project_disk(o, L.center, L.normal, L.radius)), o, L);
+        return apse::DiskLight<Map>(o, L.center, L.normal, L.radius);
     }
 };
 
 struct TabulatedFactory {  // the paper's default: tabulated LD-radial (code `concentrictab`)
     apse::TabulationView view;
     auto operator()(const vec3& o, const vec3&, const Disk& L) const {
-        return wrap(apse::TabulatedLdRadialMap<float>(apse::project_disk(o, L.center, L.normal, L.radius), view),
-                    o, L);
+        return apse::DiskLight<apse::TabulatedLdRadialMap<float>>(o, L.center, L.normal, L.radius, view);
     }
 };
 /// Cosine-weighted over the tabulated LD-radial map (CosineWeighted): directions drawn ∝ the
@@ -109,8 +110,8 @@ struct TabulatedFactory {  // the paper's default: tabulated LD-radial (code `co
 struct CosineFactory {
     apse::TabulationView view;
     auto operator()(const vec3& o, const vec3& n, const Disk& L) const {
-        const apse::TabulatedLdRadialMap<float> map(apse::project_disk(o, L.center, L.normal, L.radius), view);
-        return wrap(apse::CosineWeighted<apse::TabulatedLdRadialMap<float>>(map, n), o, L);
+        return apse::DiskLight<apse::CosineWeighted<apse::TabulatedLdRadialMap<float>>>(o, L.center, L.normal,
+                                                                                        L.radius, view, n);
     }
 };
 /// The shared table (apse::default_table(): built once, thread-safely; read-only while rendering).

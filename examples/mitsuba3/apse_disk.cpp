@@ -75,16 +75,8 @@ inline gvec3 receiver_normal(const Geometry &g, const gvec3 &o, const gvec3 &n) 
 template <typename F>
 auto with_sampler(ApseSampler kind, const Geometry &g, const gvec3 &o, const gvec3 &n, F &&f) {
     if (kind == ApseSampler::area) return f(apse::DiskAreaSampler<float>(o, g.frame));
-    return apse_plugin::with_map(kind, [&](auto map_type, auto cosine) {
-        using Map = typename decltype(map_type)::type;
-        return apse_plugin::with_map_args<Map>([&](const auto &...args) {
-            const Map map(project(g, o), args...);
-            if constexpr (decltype(cosine)::value)
-                return f(apse::CosineWeighted<Map>(map, receiver_normal(g, o, n)));
-            else
-                return f(map);
-        });
-    });
+    const gvec3 n_r = apse_plugin::cosine_weighted(kind) ? receiver_normal(g, o, n) : gvec3(0.f);
+    return f(apse_plugin::sampler_of(kind, project(g, o), n_r));
 }
 
 }  // namespace apse_disk_detail

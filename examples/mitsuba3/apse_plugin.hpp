@@ -1,13 +1,13 @@
 // apse in Mitsuba 3: what the apse_disk and apse_sphere emitter plugins share — the names of the
-// samplers, the map each name stands for, the receiver normal the cosine-weighted samplers weight
-// by, and reading a shape's to_world.
+// samplers, the map each name stands for (apse::RuntimeSampler), the receiver normal the
+// cosine-weighted samplers weight by, and reading a shape's to_world.
 // SPDX-License-Identifier: MIT
 #pragma once
 
 #include <apse/apse.hpp>
+#include <apse/runtime_sampler.hpp>
 
 #include <string>
-#include <type_traits>
 #include <typeinfo>
 
 #include <mitsuba/core/object.h>
@@ -57,35 +57,34 @@ inline gvec3 receiver_normal(const gvec3 &n, float h, float e) {
     return gvec3(0.f);
 }
 
-/// A map type, passed to the callbacks below.
-template <class Map> struct MapType { using type = Map; };
-
-/// Calls f(MapType<Map>{}, std::bool_constant<cosine>{}) for the map `kind` names and whether
-/// it is weighted by the receiver's cosine (apse::CosineWeighted over Map), and returns its
-/// result. `area` is not a map: the plugins handle it before; here it stands for ld_radial.
-template <class F> auto with_map(ApseSampler kind, F &&f) {
+/// The map a sampler name stands for (apse::MapKind; `area` is not a map: the plugins handle it
+/// before, here it stands for ld_radial).
+inline apse::MapKind map_kind(ApseSampler kind) {
     switch (kind) {
-        case ApseSampler::radial: return f(MapType<apse::RadialMap<float>>{}, std::false_type{});
-        case ApseSampler::parallel: return f(MapType<apse::ParallelMap<float>>{}, std::false_type{});
+        case ApseSampler::radial: return apse::MapKind::radial;
+        case ApseSampler::parallel: return apse::MapKind::parallel;
         case ApseSampler::tabulated_ld_radial:
-            return f(MapType<apse::TabulatedLdRadialMap<float>>{}, std::false_type{});
-        case ApseSampler::cosine_ld_radial: return f(MapType<apse::LdRadialMap<float>>{}, std::true_type{});
-        case ApseSampler::cosine_tabulated_ld_radial:
-            return f(MapType<apse::TabulatedLdRadialMap<float>>{}, std::true_type{});
+        case ApseSampler::cosine_tabulated_ld_radial: return apse::MapKind::tabulated_ld_radial;
         case ApseSampler::area:
-        case ApseSampler::ld_radial: break;
+        case ApseSampler::ld_radial:
+        case ApseSampler::cosine_ld_radial: break;
     }
-    return f(MapType<apse::LdRadialMap<float>>{}, std::false_type{});
+    return apse::MapKind::ld_radial;
 }
 
-/// Calls f(args...) with what a Map takes after its ellipse — the table for the tabulated maps
-/// (apse::default_table()), nothing for the others — and returns its result.
-template <class Map, class F> auto with_map_args(F &&f) {
-    if constexpr (std::is_same_v<Map, apse::TabulatedLdRadialMap<float>> ||
-                  std::is_same_v<Map, apse::TabulatedMap<float>>)
-        return f(apse::default_table().view());
-    else
-        return f();
+/// True for the samplers weighted by the receiver's cosine (apse::CosineWeighted over the map).
+inline bool cosine_weighted(ApseSampler kind) {
+    return kind == ApseSampler::cosine_ld_radial || kind == ApseSampler::cosine_tabulated_ld_radial;
+}
+
+/// The sampler `kind` names (any but `area`) of the spherical ellipse `e`, weighted by the
+/// receiver normal `n_r` for the cosine_* samplers: apse's runtime sampler, which holds the map
+/// chosen at run time (the tabulated maps read apse::default_table()).
+inline apse::RuntimeSampler<float> sampler_of(ApseSampler kind, const apse::SphericalEllipse<float> &e,
+                                              const gvec3 &n_r) {
+    const apse::TabulationView table = apse::default_table().view();
+    if (cosine_weighted(kind)) return apse::RuntimeSampler<float>(e, map_kind(kind), table, n_r);
+    return apse::RuntimeSampler<float>(e, map_kind(kind), table);
 }
 
 /// A Mitsuba vector or point as a glm vector.

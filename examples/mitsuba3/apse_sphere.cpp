@@ -54,22 +54,17 @@ inline gvec3 receiver_normal(const gvec3 &c, float r, const gvec3 &o, const gvec
     return apse_plugin::receiver_normal(n, glm::dot(n, c - o), r * glm::length(n));
 }
 
-/// The one place that turns a sampler name (any but `area`) into the sampler of
-/// apse::SphereLight for the shading point o with the geometric normal n (used by the cosine_*
-/// samplers only, through receiver_normal): calls f(apse_plugin::MapType<Sampler>{}, args...)
-/// with the arguments SphereLight<Sampler> and sphere_light_pdf<Sampler> take after the radius
-/// (the table, the receiver normal), and returns its result.
+/// The one place that turns a sampler name (any but `area`) into apse::SphereLight's sampler
+/// arguments for the shading point o with the geometric normal n (used by the cosine_* samplers
+/// only, through receiver_normal): calls f(args...) with what SphereLight<RuntimeSampler<float>>
+/// and sphere_light_pdf take after the radius (the map, the table, the receiver normal), and
+/// returns its result.
 template <typename F>
 auto with_sampler(ApseSampler kind, const gvec3 &c, float r, const gvec3 &o, const gvec3 &n, F &&f) {
-    return apse_plugin::with_map(kind, [&](auto map_type, auto cosine) {
-        using Map = typename decltype(map_type)::type;
-        return apse_plugin::with_map_args<Map>([&](const auto &...args) {
-            if constexpr (decltype(cosine)::value)
-                return f(apse_plugin::MapType<apse::CosineWeighted<Map>>{}, args..., receiver_normal(c, r, o, n));
-            else
-                return f(map_type, args...);
-        });
-    });
+    const apse::TabulationView table = apse::default_table().view();
+    if (apse_plugin::cosine_weighted(kind))
+        return f(apse_plugin::map_kind(kind), table, receiver_normal(c, r, o, n));
+    return f(apse_plugin::map_kind(kind), table);
 }
 
 }  // namespace apse_sphere_detail
@@ -152,9 +147,9 @@ public:
         if (!active) return { ds, 0.f };
         const gvec3 o = apse_plugin::to_glm(it.p);
         const apse::PointSample<float> s = apse_sphere_detail::with_sampler(
-            m_sampler, m_c, m_radius, o, apse_plugin::to_glm(it.n), [&](auto sampler_type, const auto &...args) {
-                using Sampler = typename decltype(sampler_type)::type;
-                return apse::SphereLight<Sampler>(o, m_c, m_radius, args...).sample(gvec2(sample.x(), sample.y()));
+            m_sampler, m_c, m_radius, o, apse_plugin::to_glm(it.n), [&](const auto &...args) {
+                return apse::SphereLight<apse::RuntimeSampler<float>>(o, m_c, m_radius, args...)
+                    .sample(gvec2(sample.x(), sample.y()));
             });
         if (!(s.pdf > 0.f)) return { ds, 0.f };
         ds.d = Vector3f(s.direction.x, s.direction.y, s.direction.z);
@@ -178,9 +173,8 @@ public:
         if (!active) return 0.f;
         const gvec3 o = apse_plugin::to_glm(it.p), w = apse_plugin::to_glm(ds.d);
         return apse_sphere_detail::with_sampler(
-            m_sampler, m_c, m_radius, o, apse_plugin::to_glm(it.n), [&](auto sampler_type, const auto &...args) {
-                using Sampler = typename decltype(sampler_type)::type;
-                return apse::sphere_light_pdf<Sampler>(o, m_c, m_radius, w, args...);
+            m_sampler, m_c, m_radius, o, apse_plugin::to_glm(it.n), [&](const auto &...args) {
+                return apse::sphere_light_pdf<apse::RuntimeSampler<float>>(o, m_c, m_radius, w, args...);
             });
     }
 

@@ -18,7 +18,7 @@
 /// Major version (the CMake package reads the three version macros from this file).
 #define APSE_VERSION_MAJOR 0
 /// Minor version: before 1.0 a new minor version may change the API.
-#define APSE_VERSION_MINOR 1
+#define APSE_VERSION_MINOR 2
 /// Patch version.
 #define APSE_VERSION_PATCH 0
 /// Single integer version: major * 10000 + minor * 100 + patch.

@@ -11,9 +11,9 @@
 ///
 /// How, by map:
 /// * every map, when its ellipse is a spherical cap (SphericalEllipse::is_cap()): the exact
-///   sampler of caps (ProjectedCapSampler, projected_cap.hpp), whatever the map — closed form
-///   above the horizon, a continuous map of the square onto the visible part when the horizon
-///   cuts the cap; the density is exactly max(0, n·ω) / Omega_perp;
+///   sampler of caps (detail::ProjectedCapSampler, projected_cap.hpp), whatever the map —
+///   closed form above the horizon, a continuous map of the square onto the visible part when
+///   the horizon cuts the cap; the density is exactly max(0, n·ω) / Omega_perp;
 /// * the tabulated maps, while the ellipse's centre is above the horizon: a warp of the map's own
 ///   square (maps/tabulated_cosine.hpp) that reuses the map's sample — a piecewise-linear
 ///   marginal over its azimuth coordinate and a model of the cosine along each ray whose root is
@@ -31,7 +31,7 @@
 #include <type_traits>
 
 #include "config.hpp"
-#include "math.hpp"
+#include "detail/math.hpp"
 #include "projected_cap.hpp"
 #include "projected_solid_angle.hpp"
 #include "sample.hpp"
@@ -41,44 +41,30 @@
 #include "detail/quadrant.hpp"
 #include "detail/vector.hpp"
 #include "maps/ld_radial.hpp"
-#include "maps/parallel.hpp"
-#include "maps/radial.hpp"
-#include "maps/tabulated.hpp"
 #include "maps/tabulated_cosine.hpp"
 
 namespace apse {
 namespace detail {
 
-/// What CosineWeighted needs to know about a map: the map that serves the plain case (`Base`:
-/// the radial map under an LD-radial one), whether the concentric map comes first (`ld`), and
-/// whether the map can sample.
-template <class Map> struct CosineTraits;
-
-/// The traits of a map used as it is (RadialMap, TabulatedMap, ParallelMap).
-template <class BaseMap> struct PlainCosineTraits {
-    using Base = BaseMap;
+/// What CosineWeighted learns from a map's own members: the map that serves the plain case and
+/// carries the weighting (`Base`: the inner radial map of an LD-radial map — a map with
+/// `radial()` — else the map itself), whether the concentric map comes first (`ld`: the map has
+/// `radial()`) and whether the base is tabulated (`tabulated`: it has the warp's building
+/// blocks, `lambda_fraction`).
+template <class Map, class = void> struct CosineTraits {
+    using Base = Map;
     static constexpr bool ld = false;
-    static constexpr bool tabulated = false;
-    static APSE_FUNC const Base& base(const Base& m) noexcept { return m; }
+    static APSE_FUNC const Base& base(const Map& m) noexcept { return m; }
 };
-template <class T> struct CosineTraits<RadialMap<T>> : PlainCosineTraits<RadialMap<T>> {
-    static APSE_FUNC bool valid(const RadialMap<T>& b) noexcept { return b.solid_angle() > T(0); }
-};
-template <class T> struct CosineTraits<LdRadialMap<T>> : CosineTraits<RadialMap<T>> {
+template <class Map> struct CosineTraits<Map, std::void_t<decltype(std::declval<const Map&>().radial())>> {
+    using Base = std::decay_t<decltype(std::declval<const Map&>().radial())>;
     static constexpr bool ld = true;
-    static APSE_FUNC const RadialMap<T>& base(const LdRadialMap<T>& m) noexcept { return m.radial(); }
+    static APSE_FUNC const Base& base(const Map& m) noexcept { return m.radial(); }
 };
-template <class T> struct CosineTraits<TabulatedMap<T>> : PlainCosineTraits<TabulatedMap<T>> {
-    static constexpr bool tabulated = true;
-    static APSE_FUNC bool valid(const TabulatedMap<T>& b) noexcept { return !b.empty(); }
-};
-template <class T> struct CosineTraits<TabulatedLdRadialMap<T>> : CosineTraits<TabulatedMap<T>> {
-    static constexpr bool ld = true;
-    static APSE_FUNC const TabulatedMap<T>& base(const TabulatedLdRadialMap<T>& m) noexcept { return m.radial(); }
-};
-template <class T> struct CosineTraits<ParallelMap<T>> : PlainCosineTraits<ParallelMap<T>> {
-    static APSE_FUNC bool valid(const ParallelMap<T>& b) noexcept { return b.solid_angle() > T(0); }
-};
+template <class Base, class = void> struct is_tabulated_base : std::false_type {};
+template <class Base>
+struct is_tabulated_base<Base, std::void_t<decltype(std::declval<const Base&>().lambda_fraction(
+                                   std::declval<typename Base::vec3::value_type>()))>> : std::true_type {};
 
 /// CosineWeighted<Map> on a spherical cap, holding only what it uses there (`Plain` is
 /// Map::CapSampler): ProjectedCapSampler for a usable receiver normal, the map's cap sampler for
@@ -150,7 +136,7 @@ private:
         const T scale = max_abs3(normal);
         const bool normal_ok = scale > T(0) && is_finite(scale) && finite3(normal);
         if (normal_ok && plain_can_sample(cap, table)) {
-            new (&u_.cap) ProjectedCapSampler<T>(cap, normal);  // built in place: no copy
+            new (&u_.cap) detail::ProjectedCapSampler<T>(cap, normal);  // built in place: no copy
             if (!u_.cap.empty()) {
                 mode_ = Mode::cap;
                 return;
@@ -178,7 +164,7 @@ private:
         APSE_FUNC Samplers() noexcept : none() {}
         char none;
         Plain plain;
-        ProjectedCapSampler<T> cap;
+        detail::ProjectedCapSampler<T> cap;
     } u_;
 };
 
@@ -187,9 +173,9 @@ struct NoCosineWarp {};
 
 }  // namespace detail
 
-// DiskLight holds a CosineWeighted in a union next to the plain maps and picks the live member at
-// run time; g++ cannot correlate the two and reports -Wmaybe-uninitialized on mode_ in the
-// members' bodies when the union's other member is the live one (a false positive: the branch
+// RuntimeSampler holds a CosineWeighted in a union next to the plain maps and picks the live
+// member at run time; g++ cannot correlate the two and reports -Wmaybe-uninitialized on mode_ in
+// the members' bodies when the union's other member is the live one (a false positive: the branch
 // that reads it is not taken). Silenced for this class only.
 #if defined(__GNUC__) && !defined(__clang__) && !defined(__CUDACC__)
 #pragma GCC diagnostic push
@@ -207,6 +193,7 @@ struct NoCosineWarp {};
 template <class Map, int Nodes = 8> class CosineWeighted {
     using Traits = detail::CosineTraits<Map>;
     using Base = typename Traits::Base;
+    static constexpr bool tabulated = detail::is_tabulated_base<Base>::value;
 
 public:
     using T = typename Map::vec3::value_type;  ///< float or double
@@ -228,18 +215,18 @@ public:
     /// entirely below the horizon).
     APSE_FUNC CosineWeighted(const Map& map, const vec3& normal) noexcept
         : mode_(Mode::empty), base_(Traits::base(map)) {
-        if (!Traits::valid(base_)) return;
+        if (base_.empty()) return;
         const T scale = detail::max_abs3(normal);
         if (!(scale > T(0)) || !detail::is_finite(scale) || !detail::finite3(normal)) {
             mode_ = Mode::plain;
             return;
         }
         if (base_.ellipse().is_cap()) {
-            new (&w_.cap) ProjectedCapSampler<T>(base_.ellipse(), normal);  // built in place: no copy of the sampler
+            new (&w_.cap) detail::ProjectedCapSampler<T>(base_.ellipse(), normal);  // built in place: no copy of the sampler
             if (!w_.cap.empty()) mode_ = Mode::cap;
             return;
         }
-        if constexpr (Traits::tabulated) {
+        if constexpr (tabulated) {
             const vec3 nl = base_.ellipse().to_local(normal * (T(1) / scale));
             if (nl.z > T(1e-3) * detail::max_abs3(nl)) {
                 w_.warp.build(base_, nl);
@@ -247,7 +234,7 @@ public:
                 return;
             }
         }
-        w_.psa = ProjectedSolidAngleSampler<T, Nodes>(base_.ellipse(), normal);
+        w_.psa = detail::ProjectedSolidAngleSampler<T, Nodes>(base_.ellipse(), normal);
         if (!w_.psa.empty()) mode_ = Mode::exact;
     }
 
@@ -296,7 +283,7 @@ public:
         bool ok = true;
         const vec2 uc = detail::clamp_unit(u, ok);
         if (!ok) return {base_.ellipse().z, T(0)};
-        if constexpr (Traits::tabulated) {
+        if constexpr (tabulated) {
             if (mode_ == Mode::warped) {
                 if constexpr (!Traits::ld) return w_.warp.sample(base_, uc.x, uc.y, std::sqrt(uc.y));
                 // the concentric map's (turns, radius), without branches
@@ -319,7 +306,7 @@ public:
         if (mode_ == Mode::empty) return T(0);
         if (mode_ == Mode::exact) return w_.psa.pdf(d);
         if (mode_ == Mode::cap) return w_.cap.pdf(d);
-        if constexpr (Traits::tabulated) {
+        if constexpr (tabulated) {
             if (mode_ == Mode::warped) {
                 vec3 l;
                 return local(d, l) && base_.ellipse().contains(d) ? w_.warp.pdf(base_, l) : T(0);
@@ -338,7 +325,7 @@ public:
         if (mode_ == Mode::empty || !local(d, l)) return vec2(T(0));
         if (mode_ == Mode::cap) return w_.cap.invert(d);
         vec2 v;
-        if constexpr (Traits::tabulated) {
+        if constexpr (tabulated) {
             if (mode_ == Mode::warped) v = w_.warp.invert(base_, l);
         }
         if (mode_ != Mode::warped) v = mode_ == Mode::exact ? w_.psa.invert(d) : base_.invert(d);
@@ -356,7 +343,7 @@ private:
     }
 
     enum class Mode : int { empty, plain, exact, warped, cap };  // exact: ProjectedSolidAngleSampler; cap: ProjectedCapSampler
-    using Warp = std::conditional_t<Traits::tabulated, detail::TabulatedCosineWarp<T, Nodes>, detail::NoCosineWarp>;
+    using Warp = std::conditional_t<tabulated, detail::TabulatedCosineWarp<T, Nodes>, detail::NoCosineWarp>;
     Mode mode_;
     Base base_;
     /// The weighting in use (mode_): none, the exact sampler, the cap sampler or the warp. A union: building a
@@ -364,8 +351,8 @@ private:
     union Weighting {
         APSE_FUNC Weighting() noexcept : none() {}
         detail::NoCosineWarp none;
-        ProjectedSolidAngleSampler<T, Nodes> psa;
-        ProjectedCapSampler<T> cap;
+        detail::ProjectedSolidAngleSampler<T, Nodes> psa;
+        detail::ProjectedCapSampler<T> cap;
         Warp warp;
     } w_;
 };

@@ -12,7 +12,7 @@
 #include "detail/glm.hpp"
 #include "detail/type_identity.hpp"
 #include "detail/vector.hpp"
-#include "math.hpp"
+#include "detail/math.hpp"
 
 namespace apse {
 

@@ -20,35 +20,23 @@
 
 #include "config.hpp"
 #include "detail/carlson.hpp"
-#include "math.hpp"
+#include "detail/math.hpp"
 
 namespace apse {
 namespace detail {
 
-/// Carlson domain: all >= 0 and finite, at most one of them zero.
-template <class T> APSE_FUNC bool carlson_args_ok(T x, T y, T z) noexcept {
-    // (the maximum, not the sum, is tested: the sum of large finite arguments may overflow)
-    return x >= T(0) && y >= T(0) && z >= T(0) && detail::is_finite(detail::max_of(detail::max_of(x, y), z)) &&
-           int(x == T(0)) + int(y == T(0)) + int(z == T(0)) <= 1;
-}
-
 template <class T> APSE_FUNC T rf_impl(T x, T y, T z) noexcept {
-    if (!carlson_args_ok(x, y, z)) return quiet_nan<T>();
+    if (!carlson_args_ok(x, y, z)) return detail::quiet_nan<T>();
     return rf_core(x, y, z);
 }
 
 template <class T> APSE_FUNC T rd_impl(T x, T y, T z) noexcept {
-    if (!(carlson_args_ok(x, y, z) && z > T(0))) return quiet_nan<T>();
+    if (!(carlson_args_ok(x, y, z) && z > T(0))) return detail::quiet_nan<T>();
     return rd_core(x, y, z);
 }
 
-template <class T> APSE_FUNC T rj_impl(T x, T y, T z, T p) noexcept {
-    if (!(carlson_args_ok(x, y, z) && p > T(0) && detail::is_finite(p))) return quiet_nan<T>();
-    return rj_core(x, y, z, p).rj;
-}
-
 template <class T> APSE_FUNC T rc_impl(T x, T y) noexcept {
-    if (!(x >= T(0) && y > T(0) && detail::is_finite(detail::max_of(x, y)))) return quiet_nan<T>();
+    if (!(x >= T(0) && y > T(0) && detail::is_finite(detail::max_of(x, y)))) return detail::quiet_nan<T>();
     return rc_core(std::fabs(x), y);  // fabs: -0 counts as 0 (d / -0 would be -inf)
 }
 
@@ -62,7 +50,7 @@ template <class T> struct ReducedAmplitude {
 template <class T> APSE_FUNC ReducedAmplitude<T> reduce_amplitude(T phi) noexcept {
     T s = std::sin(phi), c = std::cos(phi), j = T(0);
     if (c >= T(0) && std::fabs(phi) < T(2)) return {s, c, j};  // the common case: |phi| <= pi/2
-    j = std::nearbyint(phi / pi_v<T>);
+    j = std::nearbyint(phi / detail::pi_v<T>);
     if (std::fmod(j, T(2)) != T(0)) {
         s = -s;
         c = -c;
@@ -76,7 +64,7 @@ template <class T> APSE_FUNC ReducedAmplitude<T> reduce_amplitude(T phi) noexcep
 }
 
 template <class T> APSE_FUNC T k_impl(T m) noexcept {
-    if (!(m < T(1)) || !detail::is_finite(m)) return quiet_nan<T>();
+    if (!(m < T(1)) || !detail::is_finite(m)) return detail::quiet_nan<T>();
     return rf_core(T(0), T(1) - m, T(1));
 }
 
@@ -102,7 +90,7 @@ template <class T> APSE_FUNC T comp_pi_valid(T n, T m) noexcept {
         // n < 0 <= m: pi/(2 sqrt((1-n) q)) + (m/(3|n|)) R_J(0, 1-m, 1, q), q = 1 + m/|n|
         // (DLMF 19.21.12 with (p-1)(q-1) = m; both terms positive).
         const T k = m / nn, q = T(1) + k;
-        return half_pi_v<T> / (std::sqrt(T(1) + nn) * std::sqrt(q)) +
+        return detail::half_pi_v<T> / (std::sqrt(T(1) + nn) * std::sqrt(q)) +
                k * (T(1) / T(3)) * rj_core(T(0), mc, T(1), q).rj;
     }
     // n < 0, m < 0: (K + |n|(1-m)/(3(1-n)) R_J(0, 1-m, 1, q)) / (1-n), q = (1-m)/(1-n)
@@ -120,12 +108,12 @@ template <class T> APSE_FUNC T comp_pi_valid(T n, T m) noexcept {
 }
 
 template <class T> APSE_FUNC T comp_pi_impl(T n, T m) noexcept {
-    if (!(m < T(1) && n < T(1)) || !detail::is_finite(m) || !detail::is_finite(n)) return quiet_nan<T>();
+    if (!(m < T(1) && n < T(1)) || !detail::is_finite(m) || !detail::is_finite(n)) return detail::quiet_nan<T>();
     return comp_pi_valid(n, m);
 }
 
 template <class T> APSE_FUNC T f_impl(T phi, T m) noexcept {
-    if (!(m < T(1)) || !detail::is_finite(m) || !detail::is_finite(phi)) return quiet_nan<T>();
+    if (!(m < T(1)) || !detail::is_finite(m) || !detail::is_finite(phi)) return detail::quiet_nan<T>();
     const ReducedAmplitude<T> a = reduce_amplitude(phi);
     const T c2 = a.c * a.c, s2 = a.s * a.s;
     // 1 - m sin^2 = cos^2 + (1 - m) sin^2: a sum of non-negative terms, exact-ish for m -> 1.
@@ -136,7 +124,7 @@ template <class T> APSE_FUNC T f_impl(T phi, T m) noexcept {
 
 template <class T> APSE_FUNC T pi_impl(T n, T phi, T m) noexcept {
     if (!(m < T(1) && n < T(1)) || !detail::is_finite(m) || !detail::is_finite(n) || !detail::is_finite(phi))
-        return quiet_nan<T>();
+        return detail::quiet_nan<T>();
     const ReducedAmplitude<T> a = reduce_amplitude(phi);
     const T s = a.s, c = a.c, c2 = c * c, s2 = s * s, s3 = s * s2;
     const T y = c2 + (T(1) - m) * s2;  // 1 - m sin^2

@@ -27,7 +27,7 @@
 #include <cmath>
 
 #include "config.hpp"
-#include "math.hpp"
+#include "detail/math.hpp"
 #include "projected_solid_angle.hpp"
 #include "sample.hpp"
 #include "spherical_ellipse.hpp"
@@ -68,7 +68,6 @@ template <bool Precise, class T> APSE_FUNC T asin_minus_identity(T y, T w) noexc
     else return angle_of(y, w) - y;
 }
 
-}  // namespace detail
 
 /// Exact projected-solid-angle (cosine-weighted) sampling of a spherical cap for a receiver with
 /// normal n (file comment; docs/math.md §14): density max(0, n·ω) / Omega_perp in solid angle,
@@ -160,7 +159,7 @@ public:
         ap_ = sa * cg;
         if (cos_sum >= T(0)) {  // above the horizon: the filled ellipse
             cut_ = false;
-            area_ = pi_v<T> * sa * sa * cg;
+            area_ = detail::pi_v<T> * sa * sa * cg;
             half_ = T(0.5) * area_;
         } else {
             cut_ = true;
@@ -181,7 +180,7 @@ public:
             inner_ = inner_area<true>(theta_t_, st_, ct_, wt, T(1) / (T(1) + wt));
             // beyond theta_t (centre above the horizon only): the ellipse's own band,
             // a' b (x − sin x cos x) from its top, x = pi/2 − theta
-            outer_ = cg > T(0) ? ap_ * sa * detail::angle_minus_sin_cos(half_pi_v<T> - theta_t_, ct_, st_, T(1)) : T(0);
+            outer_ = cg > T(0) ? ap_ * sa * detail::angle_minus_sin_cos(detail::half_pi_v<T> - theta_t_, ct_, st_, T(1)) : T(0);
             half_ = inner_ + outer_;
             area_ = T(2) * half_;
             // the slopes of H/inner in theta/theta_t at 0 and at theta_t (the first guess's model):
@@ -234,8 +233,8 @@ public:
             // lifted along n: w = Q + t n, t = sin^2 a (1 − r^2) / (Q_z + sqrt(Q_z^2 + sin^2 a (1 − r^2)))
             const detail::ConcentricSigned<T> d = detail::concentric_to_disk_signed(uc);
             // (cos, sin) of the angle in [−pi/4, 3pi/4]: of |angle| up to pi/2, of angle − pi/2 beyond
-            const bool high = d.angle > half_pi_v<T>;
-            const detail::SinCosValues<T> v = detail::sin_cos_of_angle(high ? d.angle - half_pi_v<T> : std::fabs(d.angle));
+            const bool high = d.angle > detail::half_pi_v<T>;
+            const detail::SinCosValues<T> v = detail::sin_cos_of_angle(high ? d.angle - detail::half_pi_v<T> : std::fabs(d.angle));
             const T ca = high ? -v.s : v.c, sa = high ? v.c : std::copysign(v.s, d.angle);
             const T dx = d.radius * ca, dy = d.radius * sa;
             const T r = std::fabs(d.radius);
@@ -289,7 +288,7 @@ public:
         // x − x_lo = cos g (p + sin a cos theta) + sin g (s − cos a)
         const T dxl = cg_ * (p + sa_ * cth) + sg_ * s_minus_ca;
         if (th > theta_t_ && outer_ > T(0)) {
-            below = half_ - ap_ * sa_ * detail::angle_minus_sin_cos(half_pi_v<T> - th, cth, sth, T(1));
+            below = half_ - ap_ * sa_ * detail::angle_minus_sin_cos(detail::half_pi_v<T> - th, cth, sth, T(1));
             width = T(2) * ap_ * cth;
         } else {
             const T w = rim_w(cth);
@@ -314,7 +313,7 @@ private:
         if (rest < outer_) {
             // the ellipse's band: a' b E(x) = rest, x = pi/2 − theta, E(x) = x − sin x cos x
             const T target = rest / (ap_ * sa_);
-            const T xmax = half_pi_v<T> - theta_t_;
+            const T xmax = detail::half_pi_v<T> - theta_t_;
             const T guess = detail::min_of(cbrt_guess(T(1.5) * target), xmax);
             T sx = T(0), cx = T(1);
             auto eval = [&](T x, T& value, T& derivative) {
@@ -376,14 +375,14 @@ private:
     /// that margin of the rim or the horizon.
     APSE_HOT_INLINE bool surely_inside(T p, T q, T s, T height) const noexcept {
         const T ta = e_.tan_alpha;
-        const T lim = s * ta * (T(1) - T(8) * epsilon<T>()) - T(64) * epsilon<T>() * (T(1) + ta);
-        return height > T(32) * epsilon<T>() && lim > T(0) && p * p + q * q <= lim * lim;
+        const T lim = s * ta * (T(1) - T(8) * detail::epsilon<T>()) - T(64) * detail::epsilon<T>() * (T(1) + ta);
+        return height > T(32) * detail::epsilon<T>() && lim > T(0) && p * p + q * q <= lim * lim;
     }
 
     /// The stopping rule of the inversions, relative to the area of the piece inverted: 16 eps of
     /// T, above the rounding of the area evaluated per step (a few eps; a tighter rule would only
     /// make the last steps chase rounding).
-    static APSE_FUNC constexpr T tolerance() noexcept { return T(16) * epsilon<T>(); }
+    static APSE_FUNC constexpr T tolerance() noexcept { return T(16) * detail::epsilon<T>(); }
 
     /// The sample (w, density pd) as sample() returns it: w as it is when pdf() places it inside
     /// the cap (or pd is 0); otherwise moved towards the centre along the great circle in steps of
@@ -398,7 +397,7 @@ private:
     APSE_FUNC DirectionSample<T> moved_inside(vec3 w, T pd) const noexcept {
         if (pdf(w) > T(0)) return {w, pd};
         // w + k c turns w at the rim towards c by about k sin a: k = 4 eps / sin a for 4 eps
-        T k = detail::min_of(T(4) * epsilon<T>() / sa_, T(1));
+        T k = detail::min_of(T(4) * detail::epsilon<T>() / sa_, T(1));
         for (int i = 0; i < 4; ++i, k = detail::min_of(T(2) * k, T(1))) {
             const vec3 v = w + k * c_;
             w = v / std::sqrt(glm::dot(v, v));
@@ -460,7 +459,7 @@ private:
             const T g = inner_area<false>(th, sth, cth, w, w * wx * r) - target;
             if (!(std::fabs(g) > tol)) break;
             if (g < T(0)) lo = th; else hi = th;
-            if (it >= 40 || !(hi - lo > T(4) * epsilon<T>() * hi)) break;
+            if (it >= 40 || !(hi - lo > T(4) * detail::epsilon<T>() * hi)) break;
             const T lw = by_height ? h * h * (w * w1 * r) : w - xlo;
             const T f1 = lw * sa_ * cth;
             const T dl = -yy * sa_ * cth * (w1 * wx * r) - ap_ * sth;
@@ -581,4 +580,5 @@ private:
     bool empty_ = true;
 };
 
+}  // namespace detail
 }  // namespace apse

@@ -32,7 +32,7 @@
 #include <cmath>
 
 #include "config.hpp"
-#include "math.hpp"
+#include "detail/math.hpp"
 #include "sample.hpp"
 #include "spherical_ellipse.hpp"
 #include "detail/glm.hpp"
@@ -169,9 +169,8 @@ template <class T> APSE_FUNC T psa_azimuth_fraction(T x, T y, T& sx, T& sy) noex
     return detail::min_of(angle_of(sy, sx) * T(0.63661977236758134308), T(1));
 }
 /// dphi/dt = psa_turn_jacobian q / R^2 (t in turns): 4 quadrants × pi/2.
-template <class T> APSE_FUNC constexpr T psa_turn_jacobian() noexcept { return two_pi_v<T>; }
+template <class T> APSE_FUNC constexpr T psa_turn_jacobian() noexcept { return detail::two_pi_v<T>; }
 
-}  // namespace detail
 
 /// Exact projected-solid-angle sampling of a spherical ellipse for a receiver with normal n
 /// (file comment; docs/cosine_weighted.md): the conditional along each azimuth is exactly
@@ -217,7 +216,7 @@ public:
         k_ = std::sqrt(ia * ib);  // 1/sqrt(tan alpha tan beta)
         // the Lambert ratio sin(beta/2)/sin(alpha/2) = (sin beta/sin alpha) sqrt((1 + cos alpha)/(1 + cos beta))
         // (no product of small numbers; kept above sqrt(eps): any q > 0 is exact)
-        q_ = detail::max_of(e.sin_beta / e.sin_alpha * std::sqrt((T(1) + e.cos_alpha) / (T(1) + e.cos_beta)), std::sqrt(epsilon<T>()));
+        q_ = detail::max_of(e.sin_beta / e.sin_alpha * std::sqrt((T(1) + e.cos_alpha) / (T(1) + e.cos_beta)), std::sqrt(detail::epsilon<T>()));
         T z[Nodes + 1];
         if (n_.z > T(0)) {
             full_nodes(z);
@@ -291,7 +290,7 @@ public:
             const T f2 = (r.a * (cd - sd) * (cd + sd) + T(2) * r.b * sd * cd) * r.k * r.k;
             derivative = f1 > T(0) ? f1 - value * f2 / (T(2) * f1) : f1;
         };
-        detail::find_root_bracketed(eval, T(0), r.end, x * r.end, T(2) * epsilon<T>() * r.mass, 60);
+        detail::find_root_bracketed(eval, T(0), r.end, x * r.end, T(2) * detail::epsilon<T>() * r.mass, 60);
         // sd, cd: the last point evaluated, which find_root_bracketed returns
         const T st = sd * r.cos0 + cd * r.sin0, ct = cd * r.cos0 - sd * r.sin0;
         const T c = r.kc > T(0) ? r.kc * sd : r.a * cd + r.b * sd;
@@ -518,4 +517,5 @@ private:
     bool empty_;
 };
 
+}  // namespace detail
 }  // namespace apse

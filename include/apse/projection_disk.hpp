@@ -15,7 +15,7 @@
 #include "detail/type_identity.hpp"
 #include "detail/vector.hpp"
 #include "disk_frame.hpp"
-#include "math.hpp"
+#include "detail/math.hpp"
 #include "spherical_ellipse.hpp"
 
 namespace apse {
@@ -69,7 +69,7 @@ APSE_HOT_INLINE SphericalEllipse<T> project_disk_checked(const glm::vec<3, T>& w
     const vec3 zd = n * std::copysign(T(1), wn);  // from o towards the plane (wn != 0 here; no branch)
     // An offset below the rounding noise of w (or so small that v / h would not be accurate) is
     // the axis: alpha − beta = O(h²) is far below an ulp there, and any frame is exact.
-    const T h_min = detail::max_of(T(8) * epsilon<T>() * detail::max_abs3(w), detail::tan_min<T>() * detail::max_of(detail::max_abs3(w), r));
+    const T h_min = detail::max_of(T(8) * detail::epsilon<T>() * detail::max_abs3(w), detail::tan_min<T>() * detail::max_of(detail::max_abs3(w), r));
     const bool on_axis = !(h2 > h_min * h_min);
     if (on_axis) h2 = T(0);
     const T h = std::sqrt(h2);

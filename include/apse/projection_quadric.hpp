@@ -15,7 +15,7 @@
 #include "detail/symmetric_eigen.hpp"
 #include "detail/type_identity.hpp"
 #include "detail/vector.hpp"
-#include "math.hpp"
+#include "detail/math.hpp"
 #include "projection_disk.hpp"
 #include "spherical_ellipse.hpp"
 
@@ -86,7 +86,7 @@ APSE_FUNC SphericalEllipse<T> ellipse_of_cone(const Sym3<T>& c, const Sym3<T>& c
     // rounding). The shape moves by at most 8 eps, the solid angle and pdf by at most 8 eps
     // relative: below the eigen-solver's own error.
     const T tan_beta_raw = std::sqrt(-l3 / l1);
-    const T tan_beta = tan_alpha - tan_beta_raw <= T(8) * epsilon<T>() * tan_alpha ? tan_alpha : tan_beta_raw;
+    const T tan_beta = tan_alpha - tan_beta_raw <= T(8) * detail::epsilon<T>() * tan_alpha ? tan_alpha : tan_beta_raw;
     vec3 z = vec[ineg];
     if (glm::dot(z, toward) < T(0)) z = -z;
     vec3 x = vec[i2];
@@ -137,7 +137,7 @@ APSE_FUNC SphericalEllipse<T> project_ellipse(const glm::vec<3, T>& o, const glm
     // contracts a·b − c·d into an FMA (-march=x86-64-v3, AArch64, nvcc); below 8 eps |u| |v|
     // (per component) the axes are taken as parallel, so the ellipse is empty either way.
     const vec3 uxv = glm::cross(u, v);
-    if (!(detail::max_abs3(uxv) > T(8) * epsilon<T>() * detail::max_abs3(u) * detail::max_abs3(v)))
+    if (!(detail::max_abs3(uxv) > T(8) * detail::epsilon<T>() * detail::max_abs3(u) * detail::max_abs3(v)))
         return E::make_empty();
     const vec3 n = detail::robust_normalize(uxv);
     if (!(glm::dot(n, n) > T(0))) return E::make_empty();

@@ -25,7 +25,7 @@
 #include <cmath>
 
 #include "config.hpp"
-#include "math.hpp"
+#include "detail/math.hpp"
 #include "projection.hpp"
 #include "sample.hpp"
 #include "spherical_ellipse.hpp"
@@ -68,17 +68,12 @@ template <class T> APSE_HOT_INLINE T robust_length(const glm::vec<3, T>& v) noex
     return m * std::sqrt(glm::dot(s, s));
 }
 
-/// Whether a sphere light's sampler draws cosine-weighted samples: CosineWeighted's cap sampler
-/// (detail::CapCosine) says so through weighted(); the maps, which have no such member, never do.
-template <class Sampler>
-APSE_FUNC auto weighted_of(const Sampler& s, int) noexcept -> decltype(bool(s.weighted())) { return s.weighted(); }
-template <class Sampler> APSE_FUNC bool weighted_of(const Sampler&, long) noexcept { return false; }
-
 }  // namespace detail
 
 /// A sphere light (centre, radius) seen from one shading point o, ready to sample with
-/// `Sampler`: any map (RadialMap, LdRadialMap, ParallelMap, TabulatedMap, TabulatedLdRadialMap
-/// of T) or CosineWeighted over one. The set-up — project_sphere and the sampler's own set-up —
+/// `Sampler`: any map (LdRadialMap, TabulatedLdRadialMap, ParallelMap of T; the comparison maps
+/// of comparison.hpp), CosineWeighted over one, or RuntimeSampler (runtime_sampler.hpp) when the
+/// map is chosen at run time. The set-up — project_sphere and the sampler's own set-up —
 /// is done once in the constructor; sample() as often as needed. The samples, pdf and invert
 /// are exactly (bit for bit) those of Sampler built from project_sphere's cap, but the light
 /// holds `Sampler::CapSampler`, what the sampler does on a cap and nothing else: the radial

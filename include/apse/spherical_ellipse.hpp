@@ -11,8 +11,8 @@
 #include "config.hpp"
 #include "detail/glm.hpp"
 #include "detail/pairs.hpp"
-#include "elliptic.hpp"
-#include "math.hpp"
+#include "detail/carlson.hpp"
+#include "detail/math.hpp"
 
 namespace apse {
 namespace detail {
@@ -154,7 +154,7 @@ template <class T> struct SphericalEllipse {
     /// [pi/2, pi) or negative are out of the domain (empty ellipse), NaN → empty.
     static APSE_FUNC SphericalEllipse from_arcs(const vec3& x, const vec3& y, const vec3& z,
                                                T alpha, T beta) noexcept {
-        const T h = half_pi_v<T>;
+        const T h = detail::half_pi_v<T>;
         if (!(alpha >= T(0) && alpha <= h && beta >= T(0) && beta <= h)) return make_empty();
         // tan(float(pi/2)) is negative in float: use the cap (tan of pi/2 to rounding) there.
         const T ta = alpha >= h ? detail::tan_cap<T>() : std::tan(alpha);
@@ -184,8 +184,8 @@ template <class T> struct SphericalEllipse {
     /// denormals are (-ffast-math), (2 pi sin alpha) sin alpha / (1 + cos alpha) instead, which
     /// stays normal. Not meaningful for other ellipses (solid_angle() is).
     APSE_HOT_INLINE T cap_solid_angle() const noexcept {
-        if (one_minus_cos_alpha > T(0)) return two_pi_v<T> * one_minus_cos_alpha;
-        return (two_pi_v<T> * sin_alpha) * sin_alpha / (T(1) + cos_alpha);
+        if (one_minus_cos_alpha > T(0)) return detail::two_pi_v<T> * one_minus_cos_alpha;
+        return (detail::two_pi_v<T> * sin_alpha) * sin_alpha / (T(1) + cos_alpha);
     }
 
     /// Solid angle (steradians) of the ellipse, docs/math.md §3, by the cancellation-free form
@@ -202,7 +202,7 @@ template <class T> struct SphericalEllipse {
         if (empty()) return T(0);
         const T ca = cos_alpha, cb = cos_beta;  // cb >= ca >= 2^-55 (double), 2^-26 (float)
         const T rj_q = detail::cel_core<T, false>(cb, ca, ca * cb).rj;
-        return detail::min_of(T(4) / T(3) * (sin_alpha * ca) * (sin_beta * cb) * rj_q, two_pi_v<T>);  // may round past 2 pi
+        return detail::min_of(T(4) / T(3) * (sin_alpha * ca) * (sin_beta * cb) * rj_q, detail::two_pi_v<T>);  // may round past 2 pi
     }
 
     /// World → ellipse frame: (dot(w, x), dot(w, y), dot(w, z)). Any vector, any length.

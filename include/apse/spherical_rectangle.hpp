@@ -30,7 +30,7 @@
 #include "config.hpp"
 #include "detail/glm.hpp"
 #include "detail/vector.hpp"
-#include "math.hpp"
+#include "detail/math.hpp"
 #include "sample.hpp"
 
 namespace apse {
@@ -398,9 +398,9 @@ private:
             // Converged when the Newton step is below one ulp of t: the residual cannot shrink
             // further (steep columns, o close to the plane). Reported as 0 so the solver stops
             // here instead of treating the non-moving step as a failed one.
-            if (std::fabs(value) <= derivative * epsilon<T>() * t) value = T(0);
+            if (std::fabs(value) <= derivative * detail::epsilon<T>() * t) value = T(0);
         };
-        const T tolerance = T(4) * epsilon<T>() * solid_angle_;
+        const T tolerance = T(4) * detail::epsilon<T>() * solid_angle_;
         return detail::find_root_bracketed(eval, T(0), w_, guess, tolerance, 12).x;
     }
 

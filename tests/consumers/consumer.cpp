@@ -1,6 +1,7 @@
 // The program every consumer test builds: it includes the umbrella header and checks one value,
 // so a broken include path, package file or target fails loudly.
 #include <apse/apse.hpp>
+#include <apse/elliptic.hpp>
 
 #include <cmath>
 #include <cstdio>

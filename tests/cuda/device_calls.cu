@@ -5,6 +5,12 @@
 #include <apse/apse.hpp>
 #include <apse/baselines/area.hpp>
 #include <apse/baselines/gamito.hpp>
+#include <apse/math.hpp>
+#include <apse/elliptic.hpp>
+#include <apse/spherical_rectangle.hpp>
+#include <apse/diagnostics.hpp>
+#include <apse/comparison.hpp>
+#include <apse/runtime_sampler.hpp>
 
 #include <cstdio>
 
@@ -114,7 +120,7 @@ __global__ void maps_disk_light_kernel(const T* in, T* out, int n) {
     if (i % 3 == 0) {
         const apse::RadialMap<T> radial(e);
         const auto d = apse::sample_with_diagnostics(radial, u, diag).direction;
-        s += radial.sample(u).pdf + radial.pdf(d) + radial.invert(d).x + radial.solid_angle() + apse::detail::MapAccess::quadrant_area(radial, a) +
+        s += radial.sample(u).pdf + radial.pdf(d) + radial.invert(d).x + radial.solid_angle() + radial.quadrant_area(a) +
              T(radial.empty() ? 1 : 0);
     } else if (i % 3 == 1) {
         const apse::LdRadialMap<T> ld(e);
@@ -124,15 +130,20 @@ __global__ void maps_disk_light_kernel(const T* in, T* out, int n) {
     } else {
         const apse::ParallelMap<T> parallel(e);
         const auto d = apse::sample_with_diagnostics(parallel, u, diag).direction;
-        s += parallel.sample(u).pdf + parallel.pdf(d) + parallel.invert(d).x + parallel.solid_angle() + apse::detail::MapAccess::half_area(parallel, a) +
+        s += parallel.sample(u).pdf + parallel.pdf(d) + parallel.invert(d).x + parallel.solid_angle() + parallel.half_area(a) +
              T(parallel.empty() ? 1 : 0);
     }
-    const apse::DiskMap m = i % 3 == 0 ? apse::DiskMap::radial : (i % 3 == 1 ? apse::DiskMap::ld_radial : apse::DiskMap::parallel);
-    const apse::DiskLight<T> light(V(0), V(a, T(0), T(-1)), V(0, 0, 1), T(1), m);
+    const apse::MapKind m = i % 3 == 0 ? apse::MapKind::radial : (i % 3 == 1 ? apse::MapKind::ld_radial : apse::MapKind::parallel);
+    const apse::DiskLight<apse::RuntimeSampler<T>> light(V(0), V(a, T(0), T(-1)), V(0, 0, 1), T(1), m);
     const auto ls = light.sample(u);
     s += ls.pdf + ls.distance + ls.point.x + light.pdf(ls.direction) + light.invert(ls.direction).x + light.solid_angle();
-    s += light.ellipse().alpha() + apse::sample_disk_light(V(0), V(a, T(0), T(-1)), V(0, 0, 1), T(1), m, u).pdf;
-    s += apse::disk_light_pdf(V(0), V(a, T(0), T(-1)), V(0, 0, 1), T(1), ls.direction);
+    s += light.ellipse().alpha() + T(light.sampler().kind() == m ? 1 : 0) +
+         apse::DiskLight<apse::RuntimeSampler<T>>(V(0), V(a, T(0), T(-1)), V(0, 0, 1), T(1), m).sample(u).pdf;
+    s += apse::disk_light_pdf<apse::LdRadialMap<T>>(V(0), V(a, T(0), T(-1)), V(0, 0, 1), T(1), ls.direction);
+    // the map's type chosen at compile time
+    const apse::DiskLight<apse::LdRadialMap<T>> typed(V(0), V(a, T(0), T(-1)), V(0, 0, 1), T(1));
+    const auto ts = typed.sample(u);
+    s += ts.pdf + typed.pdf(ts.direction) + typed.invert(ts.direction).y + typed.solid_angle() + T(typed.empty() ? 1 : 0);
     out[i] = s + T(diag.iterations);
 }
 
@@ -163,15 +174,23 @@ __global__ void tabulated_kernel(const T* in, T* out, float* table_rows, int n) 
     }
     // DiskLight with the tabulated maps, and the stateless pdf of every sampler (radius as double:
     // it converts to T)
-    const apse::DiskMap m = i % 2 == 0 ? apse::DiskMap::tabulated : apse::DiskMap::tabulated_ld_radial;
+    const apse::MapKind m = i % 2 == 0 ? apse::MapKind::tabulated : apse::MapKind::tabulated_ld_radial;
     const V o(0), c(a, T(0), T(-1)), nrm(0, 0, 1), rn(T(0.2), T(0.1), T(-1));
-    const apse::DiskLight<T> light(o, c, nrm, 1.0, m, view);
+    const apse::DiskLight<apse::RuntimeSampler<T>> light(o, c, nrm, 1.0, m, view);
     const auto ls = light.sample(u);
     s += ls.pdf + ls.distance + light.pdf(ls.direction) + light.invert(ls.direction).x + light.solid_angle();
-    s += T(apse::is_tabulated(light.map()) ? 1 : 0) + apse::sample_disk_light(o, c, nrm, 1, m, view, u).pdf;
-    s += apse::disk_light_pdf(o, c, nrm, 1.0, m, view, ls.direction);
-    const apse::DiskLight<T> framed(o, apse::DiskFrame<T>::make(c, nrm, T(1)), m, view, rn);  // stored frame
+    const apse::MapKind k = light.sampler().kind();
+    s += T(k == apse::MapKind::tabulated || k == apse::MapKind::tabulated_ld_radial ? 1 : 0) +
+         apse::DiskLight<apse::RuntimeSampler<T>>(o, c, nrm, 1, m, view).sample(u).pdf;
+    s += apse::disk_light_pdf<apse::RuntimeSampler<T>>(o, c, nrm, 1.0, ls.direction, m, view);
+    const apse::DiskLight<apse::RuntimeSampler<T>> framed(o, apse::DiskFrame<T>::make(c, nrm, T(1)), m, view, rn);  // stored frame
     s += framed.sample(u).pdf;
+    // the map's type chosen at compile time, from (c, n, r) and from the stored frame; its stateless pdf
+    const apse::DiskLight<apse::TabulatedLdRadialMap<T>> typed(o, c, nrm, 1.0, view);
+    const auto ts = typed.sample(u);
+    s += ts.pdf + typed.pdf(ts.direction) + typed.invert(ts.direction).x + typed.solid_angle() +
+         apse::DiskLight<apse::TabulatedLdRadialMap<T>>(o, apse::DiskFrame<T>::make(c, nrm, T(1)), view).sample(u).pdf +
+         apse::disk_light_pdf<apse::TabulatedLdRadialMap<T>>(o, c, nrm, 1.0, ts.direction, view);
     out[i] = s;
 }
 
@@ -201,31 +220,42 @@ __global__ void cosine_kernel(const T* in, T* out, float* table_rows, int n) {
     case 3: s += cosine_calls(apse::TabulatedMap<T>(e, view), u); break;
     default: s += cosine_calls(apse::TabulatedLdRadialMap<T>(e, view), u); break;
     }
-    const apse::DiskMap m = i % 3 == 0 ? apse::DiskMap::radial : (i % 3 == 1 ? apse::DiskMap::ld_radial : apse::DiskMap::parallel);
-    const apse::DiskLight<T> light(V(0), V(a, T(0), T(-1)), V(0, 0, 1), T(1), m, V(T(1), T(0), T(-0.5)));
+    const apse::MapKind m = i % 3 == 0 ? apse::MapKind::radial : (i % 3 == 1 ? apse::MapKind::ld_radial : apse::MapKind::parallel);
+    const apse::DiskLight<apse::RuntimeSampler<T>> light(V(0), V(a, T(0), T(-1)), V(0, 0, 1), T(1), m, V(T(1), T(0), T(-0.5)));
     const auto ls = light.sample(u);
-    s += ls.pdf + light.pdf(ls.direction) + light.invert(ls.direction).x + T(light.cosine_weighted() ? 1 : 0);
+    s += ls.pdf + light.pdf(ls.direction) + light.invert(ls.direction).x + T(light.cosine_weighted() ? 1 : 0) +
+         T(light.sampler().cosine() ? 1 : 0) + T(light.sampler().weighted() ? 1 : 0);
     // cosine-weighted over a tabulated map, and its stateless pdf
-    const apse::DiskMap mt = i % 2 == 0 ? apse::DiskMap::tabulated : apse::DiskMap::tabulated_ld_radial;
-    const apse::DiskLight<T> lt(V(0), V(a, T(0), T(-1)), V(0, 0, 1), T(1), mt, view, V(T(1), T(0), T(-0.5)));
+    const apse::MapKind mt = i % 2 == 0 ? apse::MapKind::tabulated : apse::MapKind::tabulated_ld_radial;
+    const apse::DiskLight<apse::RuntimeSampler<T>> lt(V(0), V(a, T(0), T(-1)), V(0, 0, 1), T(1), mt, view, V(T(1), T(0), T(-0.5)));
     const auto lts = lt.sample(u);
-    s += lts.pdf + apse::disk_light_pdf(V(0), V(a, T(0), T(-1)), V(0, 0, 1), T(1), mt, view, V(T(1), T(0), T(-0.5)), lts.direction);
-    s += apse::sample_disk_light(V(0), V(a, T(0), T(-1)), V(0, 0, 1), T(1), mt, view, V(T(1), T(0), T(-0.5)), u).pdf;
+    s += lts.pdf + apse::disk_light_pdf<apse::RuntimeSampler<T>>(V(0), V(a, T(0), T(-1)), V(0, 0, 1), T(1), lts.direction, mt,
+                                                                 view, V(T(1), T(0), T(-0.5)));
+    s += apse::DiskLight<apse::RuntimeSampler<T>>(V(0), V(a, T(0), T(-1)), V(0, 0, 1), T(1), mt, view, V(T(1), T(0), T(-0.5)))
+             .sample(u)
+             .pdf;
+    // the cosine-weighted sampler's type chosen at compile time, and its stateless pdf
+    const apse::DiskLight<apse::CosineWeighted<apse::LdRadialMap<T>>> typed(V(0), V(a, T(0), T(-1)), V(0, 0, 1), T(1),
+                                                                           V(T(1), T(0), T(-0.5)));
+    const auto ts = typed.sample(u);
+    s += ts.pdf + typed.pdf(ts.direction) + T(typed.cosine_weighted() ? 1 : 0) +
+         apse::disk_light_pdf<apse::CosineWeighted<apse::LdRadialMap<T>>>(V(0), V(a, T(0), T(-1)), V(0, 0, 1), T(1),
+                                                                           ts.direction, V(T(1), T(0), T(-0.5)));
     // the projected-solid-angle sampler on its own (and its default, empty state)
-    const apse::ProjectedSolidAngleSampler<T> psa(e, V(T(0.2), T(0.1), T(-1)));
+    const apse::detail::ProjectedSolidAngleSampler<T> psa(e, V(T(0.2), T(0.1), T(-1)));
     const auto p = psa.sample(u);
     s += p.pdf + psa.pdf(p.direction) + psa.invert(p.direction).y + T(psa.empty() ? 1 : 0) + psa.ellipse().tan_beta +
-         apse::ProjectedSolidAngleSampler<T>().pdf(p.direction);
+         apse::detail::ProjectedSolidAngleSampler<T>().pdf(p.direction);
     // the projected-cap sampler on its own (a cap cut by the horizon) and its empty state
-    const apse::ProjectedCapSampler<T> pcs(apse::project_sphere(V(0), V(a, T(0), T(3)), T(1)), V(T(1), T(0.1), T(0.2)));
+    const apse::detail::ProjectedCapSampler<T> pcs(apse::project_sphere(V(0), V(a, T(0), T(3)), T(1)), V(T(1), T(0.1), T(0.2)));
     const auto pc = pcs.sample(u);
     s += pc.pdf + pcs.pdf(pc.direction) + pcs.invert(pc.direction).x + pcs.projected_solid_angle() + T(pcs.cut() ? 1 : 0) +
-         apse::ProjectedCapSampler<T>().pdf(pc.direction);
+         apse::detail::ProjectedCapSampler<T>().pdf(pc.direction);
     out[i] = s;
 }
 
 // Sphere lights (sphere_light.hpp) over every map, plain and cosine-weighted (the caps' closed
-// forms and ProjectedCapSampler), and the stateless pdf: a kernel of its own.
+// forms and detail::ProjectedCapSampler), and the stateless pdf: a kernel of its own.
 template <class Sampler, class... Args>
 __device__ typename Sampler::vec3::value_type sphere_calls(typename Sampler::vec2 u, const Args&... args) {
     using T = typename Sampler::vec3::value_type;
@@ -260,7 +290,7 @@ __global__ void sphere_kernel(const T* in, T* out, float* table_rows, int n) {
     default: s += sphere_calls<apse::CosineWeighted<apse::TabulatedLdRadialMap<T>>>(u, view, rn); break;
     }
     // the projected-cap sampler on its own
-    const apse::ProjectedCapSampler<T> cap(apse::project_sphere(V(0), V(T(0.5), u.x, T(3)), T(1)), rn);
+    const apse::detail::ProjectedCapSampler<T> cap(apse::project_sphere(V(0), V(T(0.5), u.x, T(3)), T(1)), rn);
     const auto p = cap.sample(u);
     s += p.pdf + cap.pdf(p.direction) + cap.invert(p.direction).y + T(cap.empty() ? 1 : 0) + cap.projected_solid_angle();
     out[i] = s;

@@ -48,6 +48,8 @@
 #include <apse/apse.hpp>
 #include <apse/baselines/area.hpp>
 #include <apse/baselines/gamito.hpp>
+#include <apse/comparison.hpp>
+#include <apse/runtime_sampler.hpp>
 
 #include <cmath>
 #include <cstdint>
@@ -135,22 +137,24 @@ APSE_RT_KIND(KCosTabulatedLd, "CosineWeighted<TabulatedLdRadialMap>", true,
 APSE_RT_KIND(KSphereLd, "SphereLight<LdRadialMap>", true, apse::SphereLight<apse::LdRadialMap<T>>(g.o, g.c, g.r))
 APSE_RT_KIND(KSphereCosLd, "SphereLight<CosineWeighted<LdRadialMap>>", true,
                  apse::SphereLight<apse::CosineWeighted<apse::LdRadialMap<T>>>(g.o, g.c, g.r, g.rn))
-APSE_RT_KIND(KProjectedCap, "ProjectedCapSampler", true, apse::ProjectedCapSampler<T>(apse::project_sphere(g.o, g.c, g.r), g.rn))
+APSE_RT_KIND(KProjectedCap, "ProjectedCapSampler", true, apse::detail::ProjectedCapSampler<T>(apse::project_sphere(g.o, g.c, g.r), g.rn))
 APSE_RT_KIND(KArea, "DiskAreaSampler", true, apse::DiskAreaSampler<T>(g.o, apse::DiskFrame<T>::make(g.c, g.n, g.r)))
 APSE_RT_KIND(KGamitoSingle, "GamitoSingleShot", false, apse::GamitoSingleShot<T>(g.o, g.c, g.n, g.r))
 APSE_RT_KIND(KGamitoRetry, "GamitoRetry(8)", false, apse::GamitoRetry<T>(g.o, g.c, g.n, g.r, 8))
 #undef APSE_RT_KIND
 
-/// DiskLight with each of the five maps (the variant), plain (Cosine false) or cosine-weighted.
+/// DiskLight<RuntimeSampler> with each of the five maps (the variant, a MapKind), plain (Cosine
+/// false) or cosine-weighted.
 template <bool Cosine> struct KDiskLightT {
     static constexpr const char* name = Cosine ? "DiskLight cosine-weighted" : "DiskLight";
     static constexpr int variants = 5;
     static constexpr bool invertible = true;
     template <class T>
     static APSE_FUNC Output<T> run(const Config<T>& g, const Case<T>& k, const apse::TabulationView& view) noexcept {
-        const auto map = static_cast<apse::DiskMap>(k.variant);
-        if constexpr (Cosine) return outputs(apse::DiskLight<T>(g.o, g.c, g.n, g.r, map, view, g.rn), k);
-        else return outputs(apse::DiskLight<T>(g.o, g.c, g.n, g.r, map, view), k);
+        const auto map = static_cast<apse::MapKind>(k.variant);
+        using Light = apse::DiskLight<apse::RuntimeSampler<T>>;
+        if constexpr (Cosine) return outputs(Light(g.o, g.c, g.n, g.r, map, view, g.rn), k);
+        else return outputs(Light(g.o, g.c, g.n, g.r, map, view), k);
     }
 };
 using KDiskLight = KDiskLightT<false>;

@@ -1,6 +1,6 @@
 // libFuzzer target: arbitrary geometry (shading point, disk centre, normal, radius), map choice
 // (the five maps; the tabulated ones with the default table), an optional receiver normal (cosine-weighted sampling) and point of the square, in float and
-// double, through disk_light.hpp. Checks what the library
+// double, through disk_light.hpp (DiskLight<RuntimeSampler<T>>). Checks what the library
 // promises for every input: a finite unit direction, a finite pdf >= 0, and for pdf > 0 a
 // direction inside the disk's spherical ellipse (rounding-aware test), a finite point at a
 // finite positive distance, an inverse inside the square, and finite MIS pdfs, the stateless one
@@ -9,6 +9,8 @@
 //
 // Build: clang++ -fsanitize=fuzzer,address,undefined (tests/CMakeLists.txt, APSE_BUILD_FUZZERS).
 #include <apse/disk_light.hpp>
+#include <apse/math.hpp>
+#include <apse/runtime_sampler.hpp>
 
 #include "fuzz_common.hpp"
 
@@ -33,15 +35,15 @@ double g_u[2];
 using apse_fuzz::finite3;
 using apse_fuzz::value;
 
-template <class T> void check(const double* g, apse::DiskMap map, bool cosine, T u1, T u2) {
+template <class T> void check(const double* g, apse::MapKind map, bool cosine, T u1, T u2) {
     using V = glm::vec<3, T>;
     const V o{T(g[0]), T(g[1]), T(g[2])}, c{T(g[3]), T(g[4]), T(g[5])}, n{T(g[6]), T(g[7]), T(g[8])};
     const T r = T(g[9]);
     const V receiver{T(g[10]), T(g[11]), T(g[12])};
     const apse::TabulationView table = apse::default_table().view();
-    const apse::DiskLight<T> light = cosine ? apse::DiskLight<T>(o, c, n, r, map, table, receiver)
-                                            : apse::DiskLight<T>(o, c, n, r, map, table);
-    const apse::DiskLightSample<T> s = light.sample(glm::vec<2, T>(u1, u2));
+    using Light = apse::DiskLight<apse::RuntimeSampler<T>>;
+    const Light light = cosine ? Light(o, c, n, r, map, table, receiver) : Light(o, c, n, r, map, table);
+    const apse::PointSample<T> s = light.sample(glm::vec<2, T>(u1, u2));
     if (!finite3(s.direction)) fail("non-finite direction");
     if (!apse::detail::is_finite(s.pdf) || !(s.pdf >= T(0))) fail("pdf not finite and >= 0");
     const T omega = light.solid_angle();
@@ -62,10 +64,10 @@ template <class T> void check(const double* g, apse::DiskMap map, bool cosine, T
     if (!(z > 0) || x * x + y * y > z * z) fail("sample outside the ellipse");
     const glm::vec<2, T> back = light.invert(s.direction);
     if (!(back.x >= T(0) && back.x <= T(1) && back.y >= T(0) && back.y <= T(1))) fail("inverse outside the square");
-    const T p1 = light.pdf(s.direction), p2 = apse::disk_light_pdf(o, c, n, r, s.direction);
+    const T p1 = light.pdf(s.direction), p2 = apse::disk_light_pdf<apse::LdRadialMap<T>>(o, c, n, r, s.direction);
     if (!apse::detail::is_finite(p1) || !(p1 >= T(0)) || !apse::detail::is_finite(p2) || !(p2 >= T(0))) fail("bad MIS pdf");
-    const T p3 = cosine ? apse::disk_light_pdf(o, c, n, r, map, table, receiver, s.direction)
-                        : apse::disk_light_pdf(o, c, n, r, map, table, s.direction);
+    const T p3 = cosine ? apse::disk_light_pdf<apse::RuntimeSampler<T>>(o, c, n, r, s.direction, map, table, receiver)
+                        : apse::disk_light_pdf<apse::RuntimeSampler<T>>(o, c, n, r, s.direction, map, table);
     // the same computation at another call site: equal, up to the rounding FMA contraction may
     // change (a tabulated bin edge: < 2 %)
     if (!apse::detail::is_finite(p3) || !(p3 >= T(0))) fail("bad stateless MIS pdf");
@@ -78,9 +80,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     FuzzedDataProvider in(data, size);
     double g[13];
     for (double& v : g) v = value(in);
-    const apse::DiskMap maps[] = {apse::DiskMap::radial, apse::DiskMap::ld_radial, apse::DiskMap::parallel,
-                                  apse::DiskMap::tabulated, apse::DiskMap::tabulated_ld_radial};
-    const apse::DiskMap map = maps[in.ConsumeIntegralInRange<int>(0, 4)];
+    const apse::MapKind maps[] = {apse::MapKind::radial, apse::MapKind::ld_radial, apse::MapKind::parallel,
+                                  apse::MapKind::tabulated, apse::MapKind::tabulated_ld_radial};
+    const apse::MapKind map = maps[in.ConsumeIntegralInRange<int>(0, 4)];
     const bool cosine = in.ConsumeBool();
     double u1 = in.ConsumeProbability<double>(), u2 = in.ConsumeProbability<double>();
     if (in.ConsumeBool()) u1 = value(in);  // sometimes out of [0, 1], NaN or infinite

@@ -4,6 +4,7 @@
 // point at a finite positive distance with rectangle coordinates in [0, 1]² (rounding-aware), an
 // inverse inside the square and finite pdf / locate values.
 #include <apse/spherical_rectangle.hpp>
+#include <apse/math.hpp>
 
 #include "fuzz_common.hpp"
 

@@ -8,9 +8,10 @@
 #include <apse/cosine_weighted.hpp>
 #include <apse/maps/ld_radial.hpp>
 #include <apse/maps/parallel.hpp>
-#include <apse/maps/radial.hpp>
-#include <apse/maps/tabulated.hpp>
+#include <apse/comparison.hpp>
+#include <apse/maps/tabulated_ld_radial.hpp>
 #include <apse/sphere_light.hpp>
+#include <apse/math.hpp>
 
 #include "../support/default_table.hpp"
 #include "fuzz_common.hpp"

@@ -4,7 +4,9 @@
 // double. A view that keeps the documented layout (rows of bins + 1 increasing floats from 0 to
 // 1) may give a poor density but never UB, a NaN or a non-unit direction, a negative pdf or an
 // inverse outside the square.
-#include <apse/maps/tabulated.hpp>
+#include <apse/comparison.hpp>
+#include <apse/maps/tabulated_ld_radial.hpp>
+#include <apse/math.hpp>
 
 #include "fuzz_common.hpp"
 

@@ -2,10 +2,13 @@
 // tests/CMakeLists.txt (one executable per macro set): <apse/apse.hpp> compiles with the macros
 // (warnings as errors), the samplers used here instantiate, and real results hold — every non-empty disk of the mpmath reference
 // table (tests/data/projection/disks.csv, tools/gen_projection_reference.py) sampled by the
-// LD-radial map and by DiskLight with pdf = 1/Omega within the projection's budget, the inverse
+// LD-radial map and by DiskLight<RuntimeSampler> (the parallel map) with pdf = 1/Omega within the projection's budget, the inverse
 // round trip, and a rectangle's solid angle against the closed form. Prints which macros were
 // defined and GLM's vector sizes; exits non-zero on any failure.
 #include <apse/apse.hpp>
+#include <apse/math.hpp>
+#include <apse/runtime_sampler.hpp>
+#include <apse/spherical_rectangle.hpp>
 
 #include <cmath>
 #include <cstdio>
@@ -76,7 +79,8 @@ template <class T> glm::vec<3, T> v3(const double* p) { return glm::vec<3, T>(T(
 template <class T> constexpr bool plain_data() {
     return std::is_trivially_copyable<apse::LdRadialMap<T>>::value &&
            std::is_trivially_copyable<apse::TabulatedLdRadialMap<T>>::value &&
-           std::is_trivially_copyable<apse::DiskLight<T>>::value &&
+           std::is_trivially_copyable<apse::DiskLight<apse::RuntimeSampler<T>>>::value &&
+           std::is_trivially_copyable<apse::DiskLight<apse::TabulatedLdRadialMap<T>>>::value &&
            std::is_trivially_copyable<apse::SphericalRectangle<T>>::value &&
            std::is_trivially_copyable<apse::PointSample<T>>::value;
 }
@@ -90,7 +94,7 @@ template <class T> void check_type(const std::vector<DiskRow>& rows) {
         if (row.empty) continue;
         const glm::vec<3, T> o = v3<T>(row.o), c = v3<T>(row.c), n = v3<T>(row.n);
         const apse::LdRadialMap<T> map(apse::project_disk(o, c, n, T(row.r)));
-        const apse::DiskLight<T> light(o, c, n, T(row.r), apse::DiskMap::parallel);
+        const apse::DiskLight<apse::RuntimeSampler<T>> light(o, c, n, T(row.r), apse::MapKind::parallel);
         const glm::vec<2, T> u(T(0.3), T(0.7));
         const apse::DirectionSample<T> s = map.sample(u);
         const auto ls = light.sample(u);

@@ -2,7 +2,8 @@
 // thread-safely). Shared by the tabulated-map tests, the shape statistics and the shapes fuzzer.
 #pragma once
 
-#include <apse/maps/tabulated.hpp>
+#include <apse/comparison.hpp>
+#include <apse/maps/tabulated_ld_radial.hpp>
 
 namespace apse_test {
 

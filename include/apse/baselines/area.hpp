@@ -20,7 +20,7 @@
 #include "../detail/type_identity.hpp"
 #include "../detail/vector.hpp"
 #include "../disk_frame.hpp"
-#include "../math.hpp"
+#include "../detail/math.hpp"
 #include "../sample.hpp"
 
 namespace apse {
@@ -70,7 +70,7 @@ public:
         // one division: q = 1/(len dn); direction d/len = d (dn q); pdf = len^3/(dn pi r^2)
         const T q = T(1) / (len * dn);
         const T ratio = len * frame_.inv_radius;
-        const T pdf = (ratio * ratio) * (len2 * q) * (T(1) / pi_v<T>);
+        const T pdf = (ratio * ratio) * (len2 * q) * (T(1) / detail::pi_v<T>);
         if (!detail::is_finite(pdf)) return {detail::robust_normalize(d), T(0)};  // grazing, or overflow: no sample
         return {d * (dn * q), pdf};
     }
@@ -88,7 +88,7 @@ public:
         const T ratio = t * frame_.inv_radius;
         const vec3 pr = p * frame_.inv_radius;
         if (!(glm::dot(pr, pr) <= T(1))) return T(0);
-        const T pdf = ratio * ratio * (T(1) / pi_v<T>) / std::fabs(cos_l);
+        const T pdf = ratio * ratio * (T(1) / detail::pi_v<T>) / std::fabs(cos_l);
         return detail::is_finite(pdf) ? pdf : T(0);
     }
 
@@ -106,7 +106,7 @@ public:
         const T x = glm::dot(p, frame_.e1) * frame_.inv_radius, y = glm::dot(p, frame_.e2) * frame_.inv_radius;
         const T rho = std::sqrt(x * x + y * y);
         if (!(rho > T(0))) return centre;
-        T turns = std::atan2(y, x) * (T(1) / two_pi_v<T>);
+        T turns = std::atan2(y, x) * (T(1) / detail::two_pi_v<T>);
         if (turns < T(0)) turns += T(1);
         return detail::concentric_from_disk(rho, turns);
     }

@@ -21,7 +21,7 @@
 #include "../config.hpp"
 #include "../detail/glm.hpp"
 #include "../detail/vector.hpp"
-#include "../math.hpp"
+#include "../detail/math.hpp"
 #include "../projection_disk.hpp"
 #include "../sample.hpp"
 #include "../spherical_rectangle.hpp"

@@ -725,5 +725,19 @@ template <class T> APSE_FUNC APSE_NOINLINE T rd_core(T x, T y, T z) noexcept {
     return scale * (rj_tail(X, Y, Z, Z) * (f / (a * std::sqrt(a))) + T(3) * sum);
 }
 
+/// Carlson domain: all >= 0 and finite, at most one of them zero.
+template <class T> APSE_FUNC bool carlson_args_ok(T x, T y, T z) noexcept {
+    // (the maximum, not the sum, is tested: the sum of large finite arguments may overflow)
+    return x >= T(0) && y >= T(0) && z >= T(0) && detail::is_finite(detail::max_of(detail::max_of(x, y), z)) &&
+           int(x == T(0)) + int(y == T(0)) + int(z == T(0)) <= 1;
+}
+
+/// R_J(x, y, z, p) with its domain checked (NaN outside): the kernel behind apse::carlson_rj, the
+/// one the solid angle and the cumulative areas call.
+template <class T> APSE_FUNC T rj_impl(T x, T y, T z, T p) noexcept {
+    if (!(carlson_args_ok(x, y, z) && p > T(0) && detail::is_finite(p))) return detail::quiet_nan<T>();
+    return rj_core(x, y, z, p).rj;
+}
+
 }  // namespace detail
 }  // namespace apse

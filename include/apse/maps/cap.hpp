@@ -17,7 +17,7 @@
 #include <type_traits>
 
 #include "../config.hpp"
-#include "../math.hpp"
+#include "../detail/math.hpp"
 #include "../sample.hpp"
 #include "../spherical_ellipse.hpp"
 #include "../detail/concentric.hpp"
@@ -55,7 +55,7 @@ APSE_HOT_INLINE glm::vec<3, T> cap_direction(const QuadrantFold<T>& fold, T omc,
 /// below its horizon, gives u2 = 1: the rim point at its azimuth).
 template <class T> APSE_FUNC glm::vec<2, T> cap_coordinates(const glm::vec<3, T>& l, T omc) noexcept {
     const T x = std::fabs(l.x), y = std::fabs(l.y);
-    const T f = clamp(std::atan2(y, x) * (T(2) / pi_v<T>), T(0), T(1));
+    const T f = clamp(std::atan2(y, x) * (T(2) / detail::pi_v<T>), T(0), T(1));
     const T u1 = clamp(unfold_quadrant_fraction(quadrant_of(l.x, l.y), f), T(0), T(1));
     const T u2 = l.z > T(0) ? clamp(((x * x + y * y) / (T(1) + l.z)) / omc, T(0), T(1)) : T(1);
     return glm::vec<2, T>(u1, u2);

@@ -39,7 +39,7 @@
 #include <cmath>
 
 #include "../config.hpp"
-#include "../elliptic.hpp"
+#include "../detail/carlson.hpp"
 #include "../spherical_ellipse.hpp"
 #include "../detail/math.hpp"
 #include "../detail/polynomial_trig.hpp"
@@ -137,7 +137,7 @@ template <class T> struct EllipseAreas : EllipseAxes<T> {
         // R_J(ca² ct², ca², C², ca²(ct² + cb² st²)) = ca^-3 R_J(ct², 1, C²/ca², ct² + cb² st²)
         // (homogeneity; the scaled form neither underflows nor overflows for any ellipse).
         const T ct2 = ct * ct, st2 = st * st, c2 = c * c;
-        const T rj = carlson_rj(ct2, T(1), ct2 + cb_over_ca2 * st2, ct2 + cb2 * st2);
+        const T rj = detail::rj_impl(ct2, T(1), ct2 + cb_over_ca2 * st2, ct2 + cb2 * st2);
         const T term1 = k1 * st * st2 * rj;
         // (both atan2 arguments divided by a^2, so that tiny ellipses do not underflow)
         const T term2 = std::atan2(ba * st * ct * (tb2 * c2 + m * ct2) / (T(1) + c), ct2 + ba2 * c * st2);

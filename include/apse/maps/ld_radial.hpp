@@ -13,18 +13,17 @@
 /// LdRadialMap (over RadialMap) and TabulatedLdRadialMap (over TabulatedMap, tabulated.hpp):
 /// `Radial` provides `ellipse()`, `sample_folded(fold, u2, iterations)` (the sample at a quadrant
 /// and its area fraction) and `local_coordinates(l)` (docs/math.md §4 inverse on the unit local
-/// direction l), both reached through MapAccess (detail/map_access.hpp). The concentric map preserves area, so the
+/// direction l). The concentric map preserves area, so the
 /// composition has the radial map's density.
 
 #include <cmath>
 
 #include "../config.hpp"
-#include "../math.hpp"
+#include "../detail/math.hpp"
 #include "../sample.hpp"
 #include "../spherical_ellipse.hpp"
 #include "../detail/concentric.hpp"
 #include "../detail/glm.hpp"
-#include "../detail/map_access.hpp"
 #include "../detail/quadrant.hpp"
 #include "cap.hpp"
 #include "radial.hpp"
@@ -45,7 +44,7 @@ APSE_FUNC DirectionSample<T> ld_sample(const Radial& radial, bool valid, const g
     const glm::vec<2, T> uc = clamp_unit(u, ok);
     if (!ok) return {radial.ellipse().z, T(0)};
     const ConcentricFold<T> disk = concentric_fold(uc);
-    return MapAccess::sample_folded(radial, disk.fold, disk.radius2, iterations);
+    return radial.sample_folded(disk.fold, disk.radius2, iterations);
 }
 
 /// invert() of the LD composition over `radial`: the radial map's (u1, u2) of the world-space
@@ -57,69 +56,85 @@ APSE_FUNC glm::vec<2, T> ld_invert(const Radial& radial, bool valid, const glm::
     bool ok = true;
     const glm::vec<3, T> l = normalize_direction(radial.ellipse().to_local(d), ok);
     if (!ok) return glm::vec<2, T>(T(0));
-    const glm::vec<2, T> polar = MapAccess::local_coordinates(radial, l);
+    const glm::vec<2, T> polar = radial.local_coordinates(l);
     return concentric_from_disk(std::sqrt(polar.y), polar.x);
 }
 
 }  // namespace detail
 
-/// LD-radial area-preserving map of the unit square onto a spherical ellipse (docs/math.md §4):
-/// RadialMap composed with the concentric map (same set-up, inversion and accuracy as
-/// RadialMap). Trivially copyable.
-template <class T> class LdRadialMap {
-    static_assert(detail::is_real_type<T>(), "apse: LdRadialMap<T>: T must be float or double");
+namespace detail {
 
+/// The LD-radial composition over the radial map `Radial` (detail::RadialMap or
+/// detail::TabulatedMap): the concentric map first, then the radial map's sample at (turns,
+/// radius^2) — the whole sampler interface, written once for LdRadialMap and
+/// TabulatedLdRadialMap (maps/tabulated_ld_radial.hpp), which add their cap sampler. The
+/// concentric map preserves area, so the composition has the radial map's density.
+template <class Radial> class LdComposition {
 public:
-    using vec2 = glm::vec<2, T>;  ///< a point of the unit square
-    using vec3 = glm::vec<3, T>;  ///< a 3-D vector (direction, point or normal)
-    /// What SphereLight holds for this map: the same samples on a cap, without the
-    /// general-ellipse path (maps/cap.hpp).
-    using CapSampler = detail::CapMap<T, true, false>;
-
-    /// Builds the map for `ellipse` (empty allowed: every sample then has pdf 0).
-    APSE_HOT_INLINE explicit LdRadialMap(const SphericalEllipse<T>& ellipse) noexcept : radial_(ellipse) {}
+    using vec2 = typename Radial::vec2;   ///< a point of the unit square
+    using vec3 = typename Radial::vec3;   ///< a 3-D vector (direction, point or normal)
+    using T = typename vec3::value_type;  ///< float or double
 
     /// The ellipse this map samples.
     APSE_FUNC const SphericalEllipse<T>& ellipse() const noexcept { return radial_.ellipse(); }
 
-    /// Solid angle Omega of the ellipse (steradians); 0 when empty.
-    APSE_FUNC T solid_angle() const noexcept { return radial_.solid_angle(); }
-
-    /// True if the map cannot sample (as RadialMap::empty): every sample and pdf is then 0.
+    /// True if the map cannot sample (empty ellipse; tabulated: invalid table): every sample and
+    /// pdf is then 0.
     APSE_FUNC bool empty() const noexcept { return radial_.empty(); }
 
-    /// Direction for the point u of the unit square: world-space unit vector inside the ellipse,
-    /// pdf = 1/Omega (solid angle). u is clamped into [0, 1]^2; a NaN coordinate or an empty
-    /// map gives pdf 0 (and the centre direction). The inversion iterations:
-    /// apse::sample_with_diagnostics.
-    APSE_FUNC DirectionSample<T> sample(const vec2& u) const noexcept {
+    /// Direction for the point u of the unit square: world-space unit vector inside the ellipse
+    /// with its density in solid angle (1/Omega for LdRadialMap; the tabulated map's own,
+    /// exactly). u is clamped into [0, 1]^2; a NaN coordinate or an empty map gives pdf 0 (and
+    /// the centre direction). The inversion iterations or table-walk steps:
+    /// apse::sample_with_diagnostics (diagnostics.hpp).
+    APSE_HOT_INLINE DirectionSample<T> sample(const vec2& u) const noexcept {
         int iterations = 0;
         return sample_counted(u, iterations);
     }
 
     /// The point of the unit square that sample() maps to the world-space direction `d` (any
-    /// non-zero length); exact inverse inside the ellipse (to ~1e-12 in double away from the
-    /// centre, where the angle is undefined). Outside: the point whose image is the boundary
-    /// point at the same azimuth; zero/NaN/infinite direction or empty ellipse: (0, 0).
-    APSE_FUNC vec2 invert(const vec3& d) const noexcept {
-        return detail::ld_invert(radial_, !radial_.empty(), d);
-    }
+    /// non-zero length): the radial map's inverse, then the inverse concentric map (exact inside
+    /// the ellipse; the angle is undefined at the centre). Outside: the point whose image is the
+    /// boundary point at the same azimuth; zero/NaN/infinite direction or empty map: (0, 0).
+    APSE_FUNC vec2 invert(const vec3& d) const noexcept { return ld_invert(radial_, !radial_.empty(), d); }
 
-    /// Density of sample() at `d`, in solid angle: 1/Omega inside the ellipse, 0 outside.
+    /// Density of sample() at `d`, in solid angle (the radial map's); 0 outside the ellipse.
     APSE_FUNC T pdf(const vec3& d) const noexcept { return radial_.pdf(d); }
 
     /// The underlying radial map.
-    APSE_FUNC const RadialMap<T>& radial() const noexcept { return radial_; }
+    APSE_FUNC const Radial& radial() const noexcept { return radial_; }
 
-private:
-    friend struct detail::DiagnosticsAccess;
-
-    /// sample(u), counting the radial map's inversion iterations in `iterations`.
-    APSE_FUNC DirectionSample<T> sample_counted(const vec2& u, int& iterations) const noexcept {
-        return detail::ld_sample(radial_, !radial_.empty(), u, iterations);
+    /// sample(u), counting the radial map's iterations (or table-walk steps) in `iterations`.
+    APSE_HOT_INLINE DirectionSample<T> sample_counted(const vec2& u, int& iterations) const noexcept {
+        return ld_sample(radial_, !radial_.empty(), u, iterations);
     }
 
-    RadialMap<T> radial_;
+protected:
+    APSE_FUNC explicit LdComposition(const Radial& radial) noexcept : radial_(radial) {}
+
+    Radial radial_;
+};
+
+}  // namespace detail
+
+/// LD-radial area-preserving map of the unit square onto a spherical ellipse (docs/math.md §4):
+/// the radial map (comparison.hpp's RadialMap) composed with the concentric map
+/// (detail::LdComposition; the same set-up, inversion and accuracy as the radial map),
+/// continuous on the whole closed square; density 1/Omega. Trivially copyable.
+template <class T> class LdRadialMap : public detail::LdComposition<detail::RadialMap<T>> {
+    static_assert(detail::is_real_type<T>(), "apse: LdRadialMap<T>: T must be float or double");
+
+public:
+    /// What SphereLight holds for this map: the same samples on a cap, without the
+    /// general-ellipse path (maps/cap.hpp).
+    using CapSampler = detail::CapMap<T, true, false>;
+
+    /// Builds the map for `ellipse` (empty allowed: every sample then has pdf 0).
+    APSE_HOT_INLINE explicit LdRadialMap(const SphericalEllipse<T>& ellipse) noexcept
+        : detail::LdComposition<detail::RadialMap<T>>(detail::RadialMap<T>(ellipse)) {}
+
+    /// Solid angle Omega of the ellipse (steradians); 0 when empty.
+    APSE_FUNC T solid_angle() const noexcept { return this->radial_.solid_angle(); }
 };
 
 }  // namespace apse

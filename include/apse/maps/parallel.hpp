@@ -11,12 +11,11 @@
 #include <cmath>
 
 #include "../config.hpp"
-#include "../math.hpp"
+#include "../detail/math.hpp"
 #include "../sample.hpp"
 #include "../spherical_ellipse.hpp"
 #include "../detail/glm.hpp"
 #include "../detail/inversion.hpp"
-#include "../detail/map_access.hpp"
 #include "../detail/quadrant.hpp"
 #include "cumulative_area.hpp"
 
@@ -34,7 +33,7 @@ namespace detail {
 /// (beta/2)^2)/(15 − (beta/2)^2), from the map's set-up): relative error below 3e-4 (beta =
 /// pi/2), far less for smaller ellipses (6.4e-4 (beta/2)^6).
 template <class T> APSE_FUNC T parallel_guess(T g, T beta, T w, T pade) noexcept {
-    const T s = cube_root_approx(T(6) * pi_v<T> * max_of(g, T(0x1p-90)));
+    const T s = cube_root_approx(T(6) * detail::pi_v<T> * max_of(g, T(0x1p-90)));
     const T s2 = s * s;
     const T planar = s2 * (T(0.12503731796729795) +
                            s2 * (T(0.0014906081882330561) +
@@ -81,7 +80,7 @@ public:
         // pi/4 for a small ellipse (w = 1) and tends to 1 for wide nearly hemispherical ones (w = 0).
         const T rect = T(2) * beta_ * areas_.a;
         const T fill = rect > T(0) ? half_ / rect : T(1);
-        blend_ = detail::clamp((T(1) - fill) / (T(1) - pi_v<T> / T(4)), T(0), T(1));
+        blend_ = detail::clamp((T(1) - fill) / (T(1) - detail::pi_v<T> / T(4)), T(0), T(1));
         const T hb2 = T(0.25) * beta_ * beta_;
         pade_ = (T(15) - T(6) * hb2) / (T(15) - hb2);
     }
@@ -145,9 +144,7 @@ public:
     /// ellipse (boundary included), 0 outside, for an empty ellipse or a zero/NaN direction.
     APSE_FUNC T pdf(const vec3& d) const noexcept { return ellipse_.contains(d) ? inv_omega_ : T(0); }
 
-private:
-    friend struct detail::DiagnosticsAccess;
-    friend struct detail::MapAccess;
+    // The building blocks sample_with_diagnostics (diagnostics.hpp) and the tests call.
 
     /// Solves the edge-area equation J(t) = g Omega/2 (g in [0, 1]: the fraction of a half
     /// beyond the slice) for the slice state, with the inversion iterations in `iterations`.
@@ -170,7 +167,7 @@ private:
     }
 
     /// Half-area I(psi) between the slices 0 and psi in [0, beta] (docs/math.md §5 I(psi),
-    /// cancellation-free; for tests, through detail::MapAccess). Omega_p(psi) = Omega/2 ± I(|psi|).
+    /// cancellation-free). Omega_p(psi) = Omega/2 ± I(|psi|).
     APSE_FUNC T half_area(T psi) const noexcept {
         const T e = detail::clamp(beta_ - psi, T(0), beta_);
         return areas_.parallel_half_area(areas_.parallel_point(detail::min_of(std::tan(T(0.5) * e) / areas_.t_max, T(1))));
@@ -193,6 +190,7 @@ private:
         return {ellipse_.to_world(local), inv_omega_};
     }
 
+private:
     SphericalEllipse<T> ellipse_;
     detail::ParallelAreas<T> areas_;
     T beta_;  ///< the minor semi-arc (one atan, at set-up)

@@ -17,12 +17,11 @@
 #include <cmath>
 
 #include "../config.hpp"
-#include "../math.hpp"
+#include "../detail/math.hpp"
 #include "../sample.hpp"
 #include "../spherical_ellipse.hpp"
 #include "../detail/glm.hpp"
 #include "../detail/inversion.hpp"
-#include "../detail/map_access.hpp"
 #include "../detail/polynomial_trig.hpp"
 #include "../detail/quadrant.hpp"
 #include "cap.hpp"
@@ -85,8 +84,6 @@ APSE_FUNC RadialFraction<T> radial_fraction(const EllipseAxes<T>& k, T x, T y, T
     const T one_minus_c = (ax * ax + by * by) / (T(1) + c);
     return {one_minus_z, one_minus_c};
 }
-
-}  // namespace detail
 
 /// Radial area-preserving map of the unit square onto a spherical ellipse (docs/math.md §4).
 ///
@@ -163,9 +160,8 @@ public:
     /// ellipse (boundary included), 0 outside, for an empty ellipse or a zero/NaN direction.
     APSE_FUNC T pdf(const vec3& d) const noexcept { return ellipse_.contains(d) ? inv_omega_ : T(0); }
 
-private:
-    friend struct detail::DiagnosticsAccess;
-    friend struct detail::MapAccess;
+    // The building blocks the LD-radial composition (maps/ld_radial.hpp), the cosine weighting
+    // and the tests call.
 
     /// The world-space sample for the quadrant and quadrant-area fraction `fold` and the radial
     /// fraction u2 in [0, 1] (not checked; the map is valid), with the inversion iterations in
@@ -181,7 +177,7 @@ private:
     }
 
     /// (u1, u2) of the unit local direction `l` (clamped to [0, 1]^2): invert() and LdRadialMap's
-    /// inverse (maps/ld_radial.hpp, through detail::MapAccess).
+    /// inverse (maps/ld_radial.hpp, ).
     APSE_FUNC vec2 local_coordinates(const vec3& l) const noexcept {
         if (cap_) return detail::cap_coordinates(l, ellipse_.one_minus_cos_alpha);
         const int q = detail::quadrant_of(l.x, l.y);
@@ -206,10 +202,10 @@ private:
     APSE_FUNC detail::RadialPoint<T> solve_quadrant(T f, int& iterations) const noexcept {
         iterations = 0;
         if (!(f > T(0))) return areas_.radial_point(T(0), T(1), T(0));
-        if (!(f < T(1))) return areas_.radial_point(half_pi_v<T>, T(0), T(1));
+        if (!(f < T(1))) return areas_.radial_point(detail::half_pi_v<T>, T(0), T(1));
         const detail::RadialPoint<T> start = guess_quadrant(f);
         const detail::RadialAreaModel<T> model{&areas_, singular_im2_};
-        const auto r = detail::invert_area(model, f * quarter_, T(0), half_pi_v<T>, start,
+        const auto r = detail::invert_area(model, f * quarter_, T(0), detail::half_pi_v<T>, start,
                                            detail::area_tolerance<T>() * quarter_);
         iterations = r.iterations;
         return r.point;
@@ -231,7 +227,7 @@ private:
     }
 
     /// Cumulative area of the first quadrant up to the azimuth phi in [0, pi/2] (docs/math.md §4
-    /// Omega_r(phi), cancellation-free; for tests, through detail::MapAccess).
+    /// Omega_r(phi), cancellation-free; for tests, ).
     APSE_FUNC T quadrant_area(T phi) const noexcept {
         const T c = std::cos(phi), s = std::sin(phi);
         const T bx = areas_.ba * detail::max_of(c, T(0)), ay = detail::max_of(s, T(0));
@@ -251,6 +247,7 @@ private:
         return sample_folded(detail::fold_quadrant(uc.x), uc.y, iterations);
     }
 
+private:
     SphericalEllipse<T> ellipse_;
     detail::EllipseAreas<T> areas_;
     T omega_, inv_omega_, quarter_, kappa_, singular_im2_;
@@ -258,4 +255,5 @@ private:
     bool valid_;
 };
 
+}  // namespace detail
 }  // namespace apse

@@ -3,8 +3,8 @@
 #pragma once
 
 /// @file maps/tabulated.hpp
-/// `TabulatedMap<T>` and `TabulatedLdRadialMap<T>`: the paper's tabulated radial / LD-radial
-/// variants (authors' code: `polartab` / `concentrictab`, docs/math.md §6), redone so that they are
+/// `TabulatedMap<T>` (namespace detail; apse::TabulatedMap from comparison.hpp): the paper's
+/// tabulated radial variant, under TabulatedLdRadialMap (maps/tabulated_ld_radial.hpp) — both (authors' code: `polartab` / `concentrictab`, docs/math.md §6), redone so that they are
 /// **unbiased**: the pdf they report is exactly the density they draw from (the authors' version
 /// rejects samples outside the ellipse, counts them as zero and reports 1/Omega: biased, §6, §11.4).
 ///
@@ -33,21 +33,20 @@
 #include <cmath>
 
 #include "../config.hpp"
-#include "../math.hpp"
+#include "../detail/math.hpp"
 #include "../sample.hpp"
 #include "../spherical_ellipse.hpp"
 #include "../detail/glm.hpp"
-#include "../detail/map_access.hpp"
 #include "../detail/pairs.hpp"
 #include "../detail/polynomial_trig.hpp"
 #include "../detail/quadrant.hpp"
 #include "cap.hpp"
 #include "cumulative_area.hpp"
-#include "ld_radial.hpp"
 #include "radial.hpp"
 #include "tabulation_table.hpp"
 
 namespace apse {
+namespace detail {
 
 /// Tabulated radial map (docs/math.md §4 + §6, unbiased; file comment): u1 picks the quadrant and the
 /// Lambert anomaly from the blended table CDF, u2 the polar angle exactly as RadialMap. Not
@@ -88,7 +87,7 @@ public:
         if (!cap_) detail::div2(T(1) + axes_.ca, T(1) + axes_.cb, T(1) + axes_.cb, T(1) + axes_.ca, kappa2_, inv_kappa2);
         detail::sqrt2(kappa2_, axes_.ca, kappa_, sqrt_ca);
         const T nb = T(bins_ > 0 ? bins_ : 1);
-        detail::div2(half_pi_v<T>, nb, T(1), nb, bin_width_, inv_bins_);
+        detail::div2(detail::half_pi_v<T>, nb, T(1), nb, bin_width_, inv_bins_);
         pdf_scale_ = T(0);
         ba_ = T(0);
         if (!valid_) return;
@@ -99,7 +98,7 @@ public:
         // is ~1; 1/kappa is in [1, sqrt 2]). 1/a and 1/b do not wait for kappa.
         T inv_a, inv_b;
         detail::div2(T(1), axes_.a, T(1), axes_.b, inv_a, inv_b);
-        pdf_scale_ = (((T(1) / two_pi_v<T>) * inv_a) * inv_b) * (kappa_ * inv_kappa2);
+        pdf_scale_ = (((T(1) / detail::two_pi_v<T>) * inv_a) * inv_b) * (kappa_ * inv_kappa2);
         ba_ = axes_.b * inv_a;
         if (!detail::is_finite(pdf_scale_) || !(pdf_scale_ > T(0))) { valid_ = false; pdf_scale_ = T(0); return; }
         // Table coordinates: x = 1 − sqrt(cos alpha), y = beta/alpha (the latter by polynomials,
@@ -169,9 +168,8 @@ public:
         return density(hi - lo, (T(1) + c) * kappa2_ / (kappa2_ * az.ct * az.ct + az.st * az.st));
     }
 
-private:
-    friend struct detail::DiagnosticsAccess;
-    friend struct detail::MapAccess;
+    // The building blocks the LD-radial composition (maps/ld_radial.hpp), the cosine-weighted
+    // warp (maps/tabulated_cosine.hpp) and the tests call.
 
     /// One azimuth of a sample (the quadrant, the Lambert point (px, py) = (cos lambda,
     /// kappa sin lambda), its length n, n C, g = 1/(n^2 (1 + C)), C = cos theta_max there) and
@@ -287,7 +285,7 @@ private:
     }
 
     /// (u1, u2) of the unit local direction `l` (clamped to [0, 1]^2): invert() and
-    /// TabulatedLdRadialMap's inverse (maps/ld_radial.hpp, through detail::MapAccess).
+    /// TabulatedLdRadialMap's inverse (maps/ld_radial.hpp).
     APSE_FUNC vec2 local_coordinates(const vec3& l) const noexcept {
         return cap_ ? detail::cap_coordinates(l, ellipse_.one_minus_cos_alpha) : local_point(l).u;
     }
@@ -316,7 +314,7 @@ private:
         Azimuth az;
         az.ct = n > T(0) ? bx / n : T(1);
         az.st = n > T(0) ? y / n : T(0);
-        az.lambda = detail::clamp(std::atan2(az.st, kappa_ * az.ct), T(0), half_pi_v<T>);
+        az.lambda = detail::clamp(std::atan2(az.st, kappa_ * az.ct), T(0), detail::half_pi_v<T>);
         int k = int(az.lambda / bin_width_);
         az.bin = k < 0 ? 0 : (k > bins_ - 1 ? bins_ - 1 : k);
         return az;
@@ -337,6 +335,7 @@ private:
         return detail::is_finite(p) ? detail::max_of(p, T(0)) : T(0);
     }
 
+private:
     SphericalEllipse<T> ellipse_;
     detail::EllipseAxes<T> axes_;
     T ba_;  ///< b / a
@@ -349,60 +348,5 @@ private:
     bool valid_;
 };
 
-/// Tabulated LD-radial map (docs/math.md §4 + §6, unbiased): the Shirley–Chiu concentric map first,
-/// then TabulatedMap with u1 = angle/(2 pi), u2 = radius^2 (as LdRadialMap over RadialMap).
-/// Continuous on the closed square; the same density, pdf, accuracy and table as TabulatedMap.
-/// Trivially copyable.
-template <class T> class TabulatedLdRadialMap {
-    static_assert(detail::is_real_type<T>(), "apse: TabulatedLdRadialMap<T>: T must be float or double");
-
-public:
-    using vec2 = glm::vec<2, T>;  ///< a point of the unit square
-    using vec3 = glm::vec<3, T>;  ///< a 3-D vector (direction, point or normal)
-    /// What SphereLight holds for this map: the same samples on a cap, without the table walk
-    /// (maps/cap.hpp).
-    using CapSampler = detail::CapMap<T, true, true>;
-
-    /// Builds the map (as TabulatedMap; empty ellipse or invalid view: pdf 0 everywhere).
-    APSE_FUNC TabulatedLdRadialMap(const SphericalEllipse<T>& ellipse, const TabulationView& table) noexcept
-        : radial_(ellipse, table) {}
-
-    /// The ellipse this map samples.
-    APSE_FUNC const SphericalEllipse<T>& ellipse() const noexcept { return radial_.ellipse(); }
-
-    /// True if the map cannot sample (pdf 0 everywhere).
-    APSE_FUNC bool empty() const noexcept { return radial_.empty(); }
-
-    /// Direction for u in [0, 1]^2 (clamped) with its exact solid-angle density; NaN, empty
-    /// ellipse or invalid table: pdf 0 and the centre direction. The table-walk steps:
-    /// apse::sample_with_diagnostics.
-    APSE_FUNC DirectionSample<T> sample(const vec2& u) const noexcept {
-        int iterations = 0;
-        return sample_counted(u, iterations);
-    }
-
-    /// Inverse of sample() (as TabulatedMap::invert, then the inverse concentric map; the angle
-    /// is undefined at the centre). Zero/NaN/infinite direction or empty map: (0, 0).
-    APSE_FUNC vec2 invert(const vec3& d) const noexcept {
-        return detail::ld_invert(radial_, !radial_.empty(), d);
-    }
-
-    /// Density of sample() at `d` in solid angle (the concentric map preserves area, so it is
-    /// TabulatedMap's); 0 outside.
-    APSE_FUNC T pdf(const vec3& d) const noexcept { return radial_.pdf(d); }
-
-    /// The underlying tabulated radial map.
-    APSE_FUNC const TabulatedMap<T>& radial() const noexcept { return radial_; }
-
-private:
-    friend struct detail::DiagnosticsAccess;
-
-    /// sample(u), counting the tabulated map's table-walk steps in `iterations`.
-    APSE_HOT_INLINE DirectionSample<T> sample_counted(const vec2& u, int& iterations) const noexcept {
-        return detail::ld_sample(radial_, !radial_.empty(), u, iterations);
-    }
-
-    TabulatedMap<T> radial_;
-};
-
+}  // namespace detail
 }  // namespace apse

@@ -35,7 +35,6 @@
 #include "../sample.hpp"
 #include "../spherical_ellipse.hpp"
 #include "../detail/glm.hpp"
-#include "../detail/map_access.hpp"
 #include "../detail/math.hpp"
 #include "../detail/pairs.hpp"
 #include "../detail/quadrant.hpp"
@@ -111,7 +110,7 @@ template <class T> APSE_HOT_INLINE T cosine_ray_step(const CosineRay<T>& ray, T 
 /// mass) for 76 % of the samples in double and 96 % in float (measured over the benchmark's
 /// lights), then steps safeguarded by the bracket (at most 32) until they do.
 template <class T> APSE_HOT_INLINE T cosine_ray_root(const CosineRay<T>& ray, T u, T root_u) noexcept {
-    const T target = u * ray.mass, tolerance = T(2) * epsilon<T>() * ray.mass;
+    const T target = u * ray.mass, tolerance = T(2) * detail::epsilon<T>() * ray.mass;
     T r = ray.end * root_u;
     r = cosine_ray_step(ray, r, ray.cdf(r) - target);
     r = cosine_ray_step(ray, r, ray.cdf(r) - target);
@@ -125,7 +124,7 @@ template <class T> APSE_HOT_INLINE T cosine_ray_root(const CosineRay<T>& ray, T 
         const T mid = T(0.5) * (lo + hi);
         r = (next > lo && next < hi) ? next : mid;
         f = ray.cdf(r) - target;
-        if (!(std::fabs(f) > tolerance) || !(hi - lo > T(4) * epsilon<T>() * hi)) break;
+        if (!(std::fabs(f) > tolerance) || !(hi - lo > T(4) * detail::epsilon<T>() * hi)) break;
     }
     return r;
 }
@@ -165,14 +164,14 @@ public:
         h[0] = a_ * a_ * ipc[0];
         h[m] = b_ * b_ * ipc[m];
         for (int j = 1; j < m; ++j) {
-            const auto ray = MapAccess::ray_at(map, QuadrantFold<T>{T(1), T(1), T(0)}, T(j) / T(m), T(0));
+            const auto ray = map.ray_at(QuadrantFold<T>{T(1), T(1), T(0)}, T(j) / T(m), T(0));
             const T inv_n = (ray.n + ray.nc) * ray.g;
             ax[j] = a_ * ray.px * inv_n;
             by[j] = b_ * ray.py * inv_n;
             c[j] = ray.c;
             ipc[j] = ray.n * ray.n * ray.g;
             h[j] = (ax[j] * ax[j] + by[j] * by[j]) * ipc[j];
-            frac[j] = MapAccess::lambda_fraction(map, T(j) / T(m));
+            frac[j] = map.lambda_fraction(T(j) / T(m));
         }
         // the intervals' widths in the first quadrant (the others mirror them), and their inverses
         T w[m], iw[m];
@@ -230,13 +229,13 @@ public:
         const T d = den > T(0) ? T(2) * x / den : T(0);
         const T m = node_[k] + slope_[k] * d;
         int steps = 0;
-        const auto ray = MapAccess::ray_folded(map, fold_quadrant(t_[k] + d), steps);
+        const auto ray = map.ray_folded(fold_quadrant(t_[k] + d), steps);
         // the cosine along it (ray_at: (a px, b py) (n + nc) g = sin theta_max (cos phi, sin phi))
         const T ax = ray.fold.sign_x * a_ * ray.px, by = ray.fold.sign_y * b_ * ray.py;
         const CosineRay<T> cr = cosine_ray(n_.z, (n_.x * ax + n_.y * by) * ((ray.n + ray.nc) * ray.g),
                                            (ax * ax + by * by) * ray.g, ray.c, ray.n * ray.n * ray.g);
         const T r = cosine_ray_root(cr, u2, root_u2);
-        DirectionSample<T> s = MapAccess::ray_sample(map, ray, r * r);
+        DirectionSample<T> s = map.ray_sample(ray, r * r);
         const T v = cr.value(r);
         const T p = s.pdf * (m * inv_total_) * v / cr.mass;
         s.pdf = v > T(0) && is_finite(p) ? p : T(0);
@@ -287,7 +286,7 @@ private:
 
     /// The map's coordinates of l, the marginal m there, the ray's model and r = sqrt(u2).
     template <class Map> APSE_FUNC auto locate(const Map& map, const vec3& l, T& m, T& r, CosineRay<T>& cr) const noexcept {
-        const auto lp = MapAccess::local_point(map, l);
+        const auto lp = map.local_point(l);
         const int k = interval_of(t_, lp.u.x);
         m = node_[k] + slope_[k] * clamp(lp.u.x - t_[k], T(0), t_[k + 1] - t_[k]);
         const T ax = std::copysign(a_ * lp.ct, l.x), by = std::copysign(b_ * lp.st, l.y);

@@ -21,7 +21,7 @@
 #include <cmath>
 
 #include "../config.hpp"
-#include "../math.hpp"
+#include "../detail/math.hpp"
 
 namespace apse {
 

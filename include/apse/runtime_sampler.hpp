@@ -1,0 +1,217 @@
+// apse — area-preserving parameterizations for spherical ellipses.
+// SPDX-License-Identifier: MIT
+#pragma once
+
+/// @file runtime_sampler.hpp
+/// `RuntimeSampler<T>`: the map chosen at run time (a scene file's string, a command-line flag),
+/// plain or cosine-weighted, for any shape — it is built from a SphericalEllipse, so it serves
+/// DiskLight, SphereLight and a projected ellipse or ellipsoid alike. Not included by apse.hpp: a
+/// renderer that knows its map at compile time uses the map's type directly and pays for nothing
+/// else; this one holds the largest of the samplers it can be.
+///
+///     const apse::TabulationView table = apse::default_table().view();
+///     apse::MapKind kind = apse::MapKind::tabulated_ld_radial;    // e.g. parsed from the scene
+///     apse::DiskLight<apse::RuntimeSampler<float>> light(o, center, normal, radius, kind, table);
+///     apse::SphereLight<apse::RuntimeSampler<float>> ball(o, c, r, kind, table, n_r);  // cosine-weighted
+///
+/// Adding a map: its header, its test, and one entry in MapKind with its type in `Maps` below.
+
+#include <new>
+#include <type_traits>
+
+#include "config.hpp"
+#include "cosine_weighted.hpp"
+#include "sample.hpp"
+#include "spherical_ellipse.hpp"
+#include "detail/glm.hpp"
+#include "detail/math.hpp"
+#include "maps/ld_radial.hpp"
+#include "maps/parallel.hpp"
+#include "maps/radial.hpp"
+#include "maps/tabulated.hpp"
+#include "maps/tabulated_ld_radial.hpp"
+#include "maps/tabulation_table.hpp"
+
+namespace apse {
+
+/// The maps a RuntimeSampler can be, in the order of `RuntimeSampler::Maps`.
+enum class MapKind : int {
+    radial,               ///< RadialMap (comparison.hpp; docs/math.md §4)
+    ld_radial,            ///< LdRadialMap: exact, continuous on the whole square
+    parallel,             ///< ParallelMap (docs/math.md §5)
+    tabulated,            ///< TabulatedMap (comparison.hpp; docs/math.md §6; needs a table)
+    tabulated_ld_radial,  ///< TabulatedLdRadialMap (needs a table): the recommended map
+};
+
+namespace detail {
+
+template <class... S> struct TypeList {
+    static constexpr int size = int(sizeof...(S));
+};
+
+/// A union of the samplers S..., one of them alive (built in place); trivially copyable and
+/// destructible when they all are. `visit(i, f)` calls f on the member i.
+template <class... S> union OneOf;
+template <> union OneOf<> {
+    char none;
+    APSE_FUNC OneOf() noexcept : none() {}
+};
+template <class S0, class... Rest> union OneOf<S0, Rest...> {
+    S0 head;
+    OneOf<Rest...> tail;
+    APSE_FUNC OneOf() noexcept : tail() {}
+
+    /// Builds the member i with `make(type_tag)` (make returns the member's value).
+    template <class Make> APSE_FUNC void emplace(int i, const Make& make) noexcept {
+        if (i == 0) {
+            new (&head) S0(make(static_cast<S0*>(nullptr)));
+            return;
+        }
+        if constexpr (sizeof...(Rest) > 0) tail.emplace(i - 1, make);
+    }
+
+    /// f(member i) (i out of range: the last member).
+    template <class F> APSE_FUNC decltype(auto) visit(int i, F&& f) const noexcept {
+        if constexpr (sizeof...(Rest) == 0) {
+            return f(head);
+        } else {
+            if (i == 0) return f(head);
+            return tail.visit(i - 1, f);
+        }
+    }
+};
+
+template <class List> struct OneOfPlainAndCosine;
+template <class... Maps> struct OneOfPlainAndCosine<TypeList<Maps...>> {
+    using type = OneOf<Maps..., CosineWeighted<Maps>...>;
+};
+
+/// Map(ellipse, table) for the maps that read a table, Map(ellipse) for the others.
+template <class Map, class T>
+APSE_FUNC Map make_map(const SphericalEllipse<T>& e, const TabulationView& table) noexcept {
+    if constexpr (std::is_constructible<Map, const SphericalEllipse<T>&, const TabulationView&>::value)
+        return Map(e, table);
+    else
+        return Map(e);
+}
+
+}  // namespace detail
+
+// g++ cannot see that only the live union member is read (the visit's index says which) and
+// reports -Wmaybe-uninitialized on the other members' fields; a false positive, silenced here.
+#if defined(__GNUC__) && !defined(__clang__) && !defined(__CUDACC__)
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
+#endif
+
+/// A sampler of a spherical ellipse whose map (MapKind) and cosine weighting are chosen at run
+/// time: exactly the samples, pdf and invert of the map — or of CosineWeighted over it — built
+/// from the same arguments. The sampler concept (sample / pdf / invert / empty / ellipse), so
+/// it plugs into DiskLight and SphereLight. Holds one sampler in a union (its size is the
+/// largest's); trivially copyable. An out-of-range kind gives the empty sampler.
+template <class T> class RuntimeSampler {
+    static_assert(detail::is_real_type<T>(), "apse: RuntimeSampler<T>: T must be float or double");
+
+public:
+    using vec2 = glm::vec<2, T>;  ///< a point of the unit square
+    using vec3 = glm::vec<3, T>;  ///< a 3-D vector (direction, point or normal)
+    /// What SphereLight holds: the sampler itself (every map takes its closed forms on a cap).
+    using CapSampler = RuntimeSampler;
+    /// The maps, in MapKind's order.
+    using Maps = detail::TypeList<detail::RadialMap<T>, LdRadialMap<T>, ParallelMap<T>, detail::TabulatedMap<T>,
+                                  TabulatedLdRadialMap<T>>;
+
+    /// The map `kind` of `ellipse`, plain (the tabulated maps read `table`; without a valid
+    /// table they are empty).
+    APSE_NOINLINE APSE_FUNC RuntimeSampler(const SphericalEllipse<T>& ellipse, MapKind kind,
+                                           const TabulationView& table = TabulationView{nullptr, 0, 0, 0}) noexcept
+        : kind_(kind), cosine_(false) {
+        build(ellipse, table, nullptr);
+    }
+
+    /// CosineWeighted over the map `kind` of `ellipse`, for the receiver normal
+    /// `receiver_normal` (CosineWeighted's contract: a zero or non-finite normal gives the plain
+    /// map's samples, weighted() false).
+    APSE_NOINLINE APSE_FUNC RuntimeSampler(const SphericalEllipse<T>& ellipse, MapKind kind, const TabulationView& table,
+                                           const vec3& receiver_normal) noexcept
+        : kind_(kind), cosine_(true) {
+        build(ellipse, table, &receiver_normal);
+    }
+
+    /// The same over an exact map, without a table (a tabulated kind gives the empty sampler).
+    APSE_FUNC RuntimeSampler(const SphericalEllipse<T>& ellipse, MapKind kind, const vec3& receiver_normal) noexcept
+        : RuntimeSampler(ellipse, kind, TabulationView{nullptr, 0, 0, 0}, receiver_normal) {}
+
+    /// The map chosen.
+    APSE_FUNC MapKind kind() const noexcept { return kind_; }
+
+    /// True if built with a receiver normal (CosineWeighted over the map).
+    APSE_FUNC bool cosine() const noexcept { return cosine_; }
+
+    /// True if the samples are cosine-weighted (CosineWeighted::weighted()).
+    APSE_FUNC bool weighted() const noexcept {
+        return visit([](const auto& s) { return detail::weighted_of(s, 0); });
+    }
+
+    /// True if the sampler cannot sample: every sample and pdf is then 0.
+    APSE_FUNC bool empty() const noexcept {
+        return visit([](const auto& s) { return s.empty(); });
+    }
+
+    /// The ellipse sampled.
+    APSE_FUNC const SphericalEllipse<T>& ellipse() const noexcept {
+        return visit([](const auto& s) -> const SphericalEllipse<T>& { return s.ellipse(); });
+    }
+
+    /// The chosen sampler's sample(u).
+    APSE_NOINLINE APSE_FUNC DirectionSample<T> sample(const vec2& u) const noexcept {
+        return visit([&u](const auto& s) { return s.sample(u); });
+    }
+
+    /// The chosen sampler's pdf(d).
+    APSE_NOINLINE APSE_FUNC T pdf(const vec3& d) const noexcept {
+        return visit([&d](const auto& s) { return s.pdf(d); });
+    }
+
+    /// The chosen sampler's invert(d).
+    APSE_NOINLINE APSE_FUNC vec2 invert(const vec3& d) const noexcept {
+        return visit([&d](const auto& s) { return s.invert(d); });
+    }
+
+private:
+    static constexpr int map_count = Maps::size;
+
+    APSE_FUNC int index() const noexcept { return int(kind_) + (cosine_ ? map_count : 0); }
+
+    template <class F> APSE_FUNC decltype(auto) visit(F&& f) const noexcept { return samplers_.visit(index(), f); }
+
+    /// Builds the sampler of the index(); an out-of-range kind: the empty LD-radial map.
+    APSE_FUNC void build(const SphericalEllipse<T>& e, const TabulationView& table, const vec3* n) noexcept {
+        if (!(int(kind_) >= 0 && int(kind_) < map_count)) {
+            kind_ = MapKind::ld_radial;
+            build(SphericalEllipse<T>::make_empty(), table, n);
+            return;
+        }
+        samplers_.emplace(index(), [&](auto* tag) { return make(tag, e, table, n); });
+    }
+
+    template <class Map>
+    static APSE_FUNC Map make(Map*, const SphericalEllipse<T>& e, const TabulationView& table, const vec3*) noexcept {
+        return detail::make_map<Map>(e, table);
+    }
+    template <class Map, int Nodes>
+    static APSE_FUNC CosineWeighted<Map, Nodes> make(CosineWeighted<Map, Nodes>*, const SphericalEllipse<T>& e,
+                                                     const TabulationView& table, const vec3* n) noexcept {
+        return CosineWeighted<Map, Nodes>(detail::make_map<Map>(e, table), n ? *n : vec3(T(0)));
+    }
+
+    MapKind kind_;
+    bool cosine_;
+    typename detail::OneOfPlainAndCosine<Maps>::type samplers_;
+};
+
+#if defined(__GNUC__) && !defined(__clang__) && !defined(__CUDACC__)
+#pragma GCC diagnostic pop
+#endif
+
+}  // namespace apse
