@@ -37,7 +37,7 @@ namespace detail {
 /// image of u, its pdf and its `iterations` (the turns folded onto a quadrant directly from u,
 /// detail::concentric_fold: no branches).
 template <class T, class Radial>
-APSE_FUNC DirectionSample<T> ld_sample(const Radial& radial, bool valid, const glm::vec<2, T>& u,
+APSE_HOT_INLINE DirectionSample<T> ld_sample(const Radial& radial, bool valid, const glm::vec<2, T>& u,
                                        int& iterations) noexcept {
     iterations = 0;
     bool ok = valid;
@@ -87,7 +87,7 @@ public:
     /// exactly). u is clamped into [0, 1]^2; a NaN coordinate or an empty map gives pdf 0 (and
     /// the centre direction). The inversion iterations or table-walk steps:
     /// apse::sample_with_diagnostics (diagnostics.hpp).
-    APSE_HOT_INLINE DirectionSample<T> sample(const vec2& u) const noexcept {
+    APSE_FUNC DirectionSample<T> sample(const vec2& u) const noexcept {
         int iterations = 0;
         return sample_counted(u, iterations);
     }
@@ -110,7 +110,9 @@ public:
     }
 
 protected:
-    APSE_FUNC explicit LdComposition(const Radial& radial) noexcept : radial_(radial) {}
+    /// The radial map built in place from `args` (the ellipse, and the table for the tabulated map).
+    template <class... Args>
+    APSE_FUNC explicit LdComposition(const Args&... args) noexcept : radial_(args...) {}
 
     Radial radial_;
 };
@@ -131,7 +133,7 @@ public:
 
     /// Builds the map for `ellipse` (empty allowed: every sample then has pdf 0).
     APSE_HOT_INLINE explicit LdRadialMap(const SphericalEllipse<T>& ellipse) noexcept
-        : detail::LdComposition<detail::RadialMap<T>>(detail::RadialMap<T>(ellipse)) {}
+        : detail::LdComposition<detail::RadialMap<T>>(ellipse) {}
 
     /// Solid angle Omega of the ellipse (steradians); 0 when empty.
     APSE_FUNC T solid_angle() const noexcept { return this->radial_.solid_angle(); }

@@ -174,7 +174,7 @@ public:
     }
 
     /// sample(u), counting the inversion iterations in `iterations` (detail/inversion.hpp).
-    APSE_FUNC DirectionSample<T> sample_counted(const vec2& u, int& iterations) const noexcept {
+    APSE_HOT_INLINE DirectionSample<T> sample_counted(const vec2& u, int& iterations) const noexcept {
         iterations = 0;
         bool ok = valid_;
         const vec2 uc = detail::clamp_unit(u, ok);

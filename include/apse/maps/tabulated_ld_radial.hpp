@@ -36,7 +36,7 @@ public:
     /// Builds the map for `ellipse` reading `table` (empty ellipse or invalid view: pdf 0
     /// everywhere).
     APSE_FUNC TabulatedLdRadialMap(const SphericalEllipse<T>& ellipse, const TabulationView& table) noexcept
-        : detail::LdComposition<detail::TabulatedMap<T>>(detail::TabulatedMap<T>(ellipse, table)) {}
+        : detail::LdComposition<detail::TabulatedMap<T>>(ellipse, table) {}
 };
 
 }  // namespace apse
