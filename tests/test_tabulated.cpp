@@ -12,6 +12,7 @@
 
 #include "support/default_table.hpp"
 #include "support/map_testing.hpp"
+#include "support/table_uniformity.hpp"
 
 #include "support/catch.hpp"
 
@@ -181,75 +182,23 @@ TEMPLATE_TEST_CASE("tabulated: Monte Carlo estimates are unbiased", "[tabulated]
     }
 }
 
-namespace {
-
-const double kAlphas[] = {1e-6, 1e-3, 0.05, 0.3, 0.7, 1.0, 1.3, 1.45, 1.5, 1.54, 1.555, 1.565, 1.569, 1.5707, 1.5707963};
-const double kRatios[] = {1e-3, 0.01, 0.03, 0.06, 0.1, 0.2, 0.35, 0.5, 0.7, 0.9, 0.99, 1.0};
-
-/// max |pdf Omega − 1| of a map over a 512 x 3 grid of u (u1 over one quadrant: the others are
-/// reflections), from sample()'s reported pdf.
-template <class T, class Map> double max_uniformity_error(const Map& map, double omega) {
-    double worst = 0;
-    for (int i = 0; i < 512; ++i)
-        for (int j = 0; j < 3; ++j) {
-            const auto s = map.sample(Vec2<T>(T((i + 0.5) / 512 * 0.25), T(0.2 + 0.3 * j)));
-            worst = std::max(worst, std::fabs(double(s.pdf) * omega - 1));
-        }
-    return worst;
-}
-
-template <class T> apse::SphericalEllipse<T> arcs(double alpha, double ratio) {
-    return apse::SphericalEllipse<T>::from_arcs(Vec3<T>(1, 0, 0), Vec3<T>(0, 1, 0), Vec3<T>(0, 0, 1), T(alpha),
-                                                T(alpha * ratio));
-}
-
-}  // namespace
-
 TEMPLATE_TEST_CASE("tabulated: pdf within 1 % of 1/Omega for the default table", "[tabulated][uniformity]", float, double) {
     using T = TestType;
     // The default table's measured max |pdf Omega − 1| is 0.44 % (docs/tabulated.md); the bound
     // asserted is the 1 % requirement. Shapes from 1e-6 rad to the hemisphere, beta/alpha from
     // 1e-3 to 1. Omega in double from the double ellipse (the float one has ~1e-6 relative error).
     double worst = 0, wa = 0, wr = 0;
-    for (double a : kAlphas)
-        for (double r : kRatios) {
-            const auto e = arcs<T>(a, r);
+    for (double a : apse_test::table_alphas)
+        for (double r : apse_test::table_ratios) {
+            const auto e = apse_test::ellipse_of_arcs<T>(a, r);
             if (e.empty()) continue;
-            const double omega = double(arcs<double>(double(e.alpha()), double(e.beta()) / double(e.alpha())).solid_angle());
-            const double err = max_uniformity_error<T>(apse::TabulatedMap<T>(e, default_table().view()), omega);
+            const double omega =
+                double(apse_test::ellipse_of_arcs<double>(double(e.alpha()), double(e.beta()) / double(e.alpha())).solid_angle());
+            const double err = apse_test::max_uniformity_error<T>(apse::TabulatedMap<T>(e, default_table().view()), omega);
             if (err > worst) { worst = err; wa = a; wr = r; }
         }
     std::printf("[%s] default table: max |pdf Omega - 1| = %.3e (alpha %g, beta/alpha %g)\n", type_name<T>(), worst, wa, wr);
     CHECK(worst <= 0.01);
-}
-
-TEST_CASE("tabulated: max |pdf Omega - 1| against table size (report)", "[.][tabulated][report]") {
-    // Not run by default (ctest): `test_tabulated "[report]"` prints the docs/tabulated.md table.
-    auto report = [](const char* name, const auto& table, std::size_t bytes) {
-        double worst = 0;
-        for (double a : kAlphas)
-            for (double r : kRatios) {
-                const auto e = arcs<double>(a, r);
-                worst = std::max(worst, max_uniformity_error<double>(apse::TabulatedMap<double>(e, table.view()), e.solid_angle()));
-            }
-        std::printf("table %-10s %8zu bytes: max |pdf Omega - 1| = %.3e\n", name, bytes, worst);
-    };
-#define APSE_REPORT(B, X, Y)                                                 \
-    {                                                                        \
-        auto t = std::make_unique<apse::TabulationTableN<B, X, Y>>();       \
-        t->build();                                                          \
-        report(#B "x" #X "x" #Y, *t, sizeof(*t));                            \
-    }
-    APSE_REPORT(16, 17, 9)
-    APSE_REPORT(32, 17, 9)
-    APSE_REPORT(64, 17, 9)
-    APSE_REPORT(64, 9, 5)
-    APSE_REPORT(128, 9, 5)
-    APSE_REPORT(128, 17, 9)
-    APSE_REPORT(128, 33, 17)
-    APSE_REPORT(256, 17, 9)
-    APSE_REPORT(512, 17, 9)
-#undef APSE_REPORT
 }
 
 TEMPLATE_TEST_CASE("tabulated: sample, pdf and invert agree, samples inside", "[tabulated][properties]", float, double) {
@@ -268,7 +217,7 @@ TEMPLATE_TEST_CASE("tabulated: sample, pdf and invert agree, samples inside", "[
     int edge_cases = 0, checked = 0;
     for (double a : {1e-3, 0.3, 1.0, 1.5, 1.5706})
         for (double r : {1e-3, 0.1, 0.6, 1.0}) {
-            const auto e = arcs<T>(a, r);
+            const auto e = apse_test::ellipse_of_arcs<T>(a, r);
             REQUIRE_FALSE(e.empty());
             for_each_map(e, default_table().view(), [&](const std::string& name, const auto& map) {
                 for (int i = 0; i < 400; ++i) {
@@ -316,10 +265,10 @@ TEMPLATE_TEST_CASE("tabulated: degenerate input", "[tabulated][robust]", float, 
         const double len = std::sqrt(double(glm::dot(d, d)));
         return apse::detail::is_finite(len) && std::fabs(len - 1) < 1e-5;
     };
-    const auto good = arcs<T>(0.5, 0.5);
+    const auto good = apse_test::ellipse_of_arcs<T>(0.5, 0.5);
     const apse::TabulationView null_view{nullptr, 128, 17, 9};
     const apse::TabulationView bad_dims{default_table().cdf, 0, 1, 1};
-    const apse::SphericalEllipse<T> empties[] = {apse::SphericalEllipse<T>::make_empty(), arcs<T>(nan, 0.5),
+    const apse::SphericalEllipse<T> empties[] = {apse::SphericalEllipse<T>::make_empty(), apse_test::ellipse_of_arcs<T>(nan, 0.5),
                                                  disk_ellipse<T>(0.0, 3.0)};
     for (const auto& e : empties) {
         REQUIRE(e.empty());
@@ -403,9 +352,9 @@ TEMPLATE_TEST_CASE("tabulated: table walk is short", "[tabulated][properties]", 
     long steps = 0, count = 0;
     int worst = 0;
     apse_test::Rng rng(sizeof(T) == 4 ? 21 : 22);
-    for (double a : kAlphas)
-        for (double r : kRatios) {
-            const auto e = arcs<T>(a, r);
+    for (double a : apse_test::table_alphas)
+        for (double r : apse_test::table_ratios) {
+            const auto e = apse_test::ellipse_of_arcs<T>(a, r);
             if (e.empty()) continue;
             const apse::TabulatedMap<T> map(e, default_table().view());
             for (int i = 0; i < 200; ++i) {

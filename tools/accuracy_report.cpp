@@ -7,20 +7,26 @@
 // plus the input with the largest error of the path the public float/double functions use.
 // This is the accuracy table of docs/elliptic.md, which --into writes there (between the page's
 // lines "<!-- accuracy_report: elliptic -->" and "<!-- /accuracy_report: elliptic -->").
+// With `table_sizes` instead: the tabulated map's max |pdf Omega − 1| against the size of its
+// table, the table of docs/tabulated.md (section "table_sizes").
 //
 //   accuracy_report [--into PAGE] [data_dir]      (default: the source tree's tests/data/elliptic)
+//   accuracy_report [--into PAGE] table_sizes
 //
 // The reference values carry 30 digits and the inputs are exactly representable in float, so
 // the measured error is the library's own error (the reference's is ~1e-30).
 #include <apse/elliptic.hpp>
+#include <apse/maps/tabulation_table.hpp>
 
 #include "doc_report.hpp"
 #include "support/reference_table.hpp"
+#include "support/table_uniformity.hpp"
 
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -117,6 +123,34 @@ std::string fmt_input(const std::vector<double>& in) {
     return s + ")";
 }
 
+/// One row of the table-size table: max |pdf Omega − 1| with the table TabulationTableN<B, X, Y>.
+template <int B, int X, int Y> void table_size_row(apse_tools::DocReport& report, bool is_default) {
+    auto table = std::make_unique<apse::TabulationTableN<B, X, Y>>();  // up to 320 KB: not on the stack
+    table->build();
+    const double error = apse_test::table_uniformity_error(*table);
+    const char* bold = is_default ? "**" : "";
+    report.printf("| %s%d × %d × %d%s%s | %s%.0f KB%s | %s%#.2g %%%s |\n", bold, B, X, Y, is_default ? " (default)" : "",
+                  bold, bold, double(sizeof(*table)) / 1024.0, bold, bold, 100.0 * error, bold);
+}
+
+/// The table-size table of docs/tabulated.md: max |pdf Omega − 1| of the tabulated radial map
+/// over the shapes of support/table_uniformity.hpp, in double, for tables of several sizes.
+int table_sizes(const std::string& page) {
+    apse_tools::DocReport report("accuracy_report");
+    report.section("table_sizes");
+    report.printf("| bins × α nodes × ratio nodes | memory | max \\|pdf·Ω − 1\\| |\n|---|---|---|\n");
+    table_size_row<16, 17, 9>(report, false);
+    table_size_row<32, 17, 9>(report, false);
+    table_size_row<64, 9, 5>(report, false);
+    table_size_row<64, 17, 9>(report, false);
+    table_size_row<128, 9, 5>(report, false);
+    table_size_row<128, 17, 9>(report, true);
+    table_size_row<128, 33, 17>(report, false);
+    table_size_row<256, 17, 9>(report, false);
+    table_size_row<512, 17, 9>(report, false);
+    return report.finish(page) != 0 ? 2 : 0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -126,6 +160,7 @@ int main(int argc, char** argv) {
         page = argv[2];
         arg = 3;
     }
+    if (argc > arg && std::string(argv[arg]) == "table_sizes") return table_sizes(page);
     const std::string dir = argc > arg ? argv[arg] : std::string(APSE_TEST_DATA_DIR) + "/elliptic";
     // the data directory as the page names it: relative to the source tree where it is the default
     const std::string shown = argc > arg ? dir : std::string("tests/data/elliptic");
