@@ -31,14 +31,18 @@ benchmark names:
 Uses the "median" aggregates when repetitions were run, the plain runs otherwise. The header
 states the CPU and compiler recorded in the JSON context. Only the standard library is needed.
 
+* bench_mis_query (names <query>/<hit|bsdf><float|double>): the cost of the stateless MIS
+  query per map, for directions that hit the disk (docs/tabulated.md).
+
 With --into PAGE the tables are written into the markdown page instead of printed: each section
 (disks: the disk table and its spread; breakdown: the cost breakdown; spheres: the sphere-light
-table; elliptic: the elliptic-integral table) replaces what stands between the page's lines
+table; elliptic: the elliptic-integral table; mis_query: the MIS-query table) replaces what stands between the page's lines
 `<!-- bench_table.py: NAME -->` and `<!-- /bench_table.py: NAME -->`, so that a measured table
 lives in one place and is never copied by hand:
 
     python3 tools/bench_table.py --into docs/speed.md samplers.json
     python3 tools/bench_table.py --into docs/elliptic.md elliptic.json
+    python3 tools/bench_table.py --into docs/tabulated.md mis_query.json
 """
 
 import contextlib
@@ -371,10 +375,56 @@ def main():
         print('\n\n'.join(body.strip('\n') for body in SECTIONS.values()))
 
 
+MIS_NAME = re.compile(r'^([a-z_+]+)/(hit|bsdf)<(float|double)>$')
+MIS_ROWS = [
+    ('area_pdf', "area sampling's pdf (`DiskAreaSampler` from a stored frame: a ray-disk intersection)"),
+    ('project_disk+contains', '`project_disk` + `contains` (the floor of every query; also the cost of a miss)'),
+    ('disk_light_pdf_exact', '`disk_light_pdf<LdRadialMap>` (+ the exact map\'s set-up: one R_J and its area constants)'),
+    ('disk_light_pdf_tabulated', '`disk_light_pdf<TabulatedLdRadialMap>` (+ the map\'s set-up and one look-up: '
+     'an `atan2`, two blended CDF entries)'),
+    ('disk_light_pdf_cosine_tabulated', '`disk_light_pdf<CosineWeighted<TabulatedLdRadialMap>>` (+ the warp\'s '
+     'set-up and its density: the receiver faces the disk\'s plane, so the light\'s centre is above its '
+     'horizon and the warp serves the query)'),
+]
+
+
+def mis_query_table(data):
+    """bench_mis_query: median ns per query of each stateless pdf, for directions that hit the disk."""
+    runs = data.get('benchmarks', [])
+    have_median = any(b.get('aggregate_name') == 'median' for b in runs)
+    times = {}
+    for b in runs:
+        if (b.get('aggregate_name') != 'median') if have_median else b.get('run_type') == 'aggregate':
+            continue
+        m = MIS_NAME.match(b.get('run_name', b['name']))
+        if m:
+            scale = {'ns': 1.0, 'us': 1e3, 'ms': 1e6, 's': 1e9}[b.get('time_unit', 'ns')]
+            times[(m.group(1), m.group(2), m.group(3))] = b['cpu_time'] * scale
+    reps = max([b.get('repetitions', 1) for b in runs] or [1])
+    print(header(data.get('context', {}), have_median, reps))
+    print()
+    print('| query | float ns | double ns |')
+    print('|---|---:|---:|')
+    for key, title in MIS_ROWS:
+        cells = ['%.0f' % times[(key, 'hit', ty)] if (key, 'hit', ty) in times else '—' for ty in ('float', 'double')]
+        print('| %s | %s |' % (title, ' | '.join(cells)))
+    tab, exact = 'disk_light_pdf_tabulated', 'disk_light_pdf_exact'
+    ratios = ['%.1f' % (times[(tab, 'hit', ty)] / times[(exact, 'hit', ty)]) for ty in ('float', 'double')
+              if (tab, 'hit', ty) in times and (exact, 'hit', ty) in times]
+    print()
+    print('Per direction that hits the disk (the costly case). The tabulated query costs %s× the exact '
+          "map's (float, double)." % ' and '.join(ratios))
+
+
 def tables(datas):
     data = datas[0]
-    if any(SAMPLER_NAME.match(b.get('run_name', b['name'])) for b in data.get('benchmarks', [])):
+    names = [b.get('run_name', b['name']) for b in data.get('benchmarks', [])]
+    if any(SAMPLER_NAME.match(n) for n in names):
         samplers_table(datas)
+        return
+    if any(MIS_NAME.match(n) for n in names):
+        with section('mis_query'):
+            mis_query_table(data)
         return
     with section('elliptic'):
         elliptic_table(data)
