@@ -176,45 +176,20 @@ struct Rectangle {  // the disk's circumscribed square
     }
 };
 
-/// The printed names of the samplers over each map (in MapKind's order), plain and cosine-weighted.
-constexpr const char* runtime_names[5][2] = {
-    {"RuntimeSampler radial", "RuntimeSampler radial, cosine"},
-    {"RuntimeSampler ld_radial", "RuntimeSampler ld_radial, cosine"},
-    {"RuntimeSampler parallel", "RuntimeSampler parallel, cosine"},
-    {"RuntimeSampler tabulated", "RuntimeSampler tabulated, cosine"},
-    {"RuntimeSampler tabulated_ld", "RuntimeSampler tabulated_ld, cosine"}};
-constexpr const char* runtime_light_names[5][2] = {
-    {"DiskLight<Runtime> radial", "DiskLight<Runtime> radial, cosine"},
-    {"DiskLight<Runtime> ld_radial", "DiskLight<Runtime> ld_radial, cosine"},
-    {"DiskLight<Runtime> parallel", "DiskLight<Runtime> parallel, cosine"},
-    {"DiskLight<Runtime> tabulated", "DiskLight<Runtime> tabulated, cosine"},
-    {"DiskLight<Runtime> tabulated_ld", "DiskLight<Runtime> tabulated_ld, cosine"}};
-template <template <class> class Map> struct typed_light_names;  // [cosine][framed]
-template <> struct typed_light_names<apse::RadialMap> {
-    static constexpr const char* value[2][2] = {{"DiskLight<RadialMap>", "DiskLight<RadialMap>(frame)"},
-                                                {"DiskLight<Cosine<RadialMap>>", "DiskLight<Cosine<RadialMap>>(frame)"}};
-};
-template <> struct typed_light_names<apse::LdRadialMap> {
-    static constexpr const char* value[2][2] = {{"DiskLight<LdRadialMap>", "DiskLight<LdRadialMap>(frame)"},
-                                                {"DiskLight<Cosine<LdRadialMap>>", "DiskLight<Cosine<LdRadialMap>>(frame)"}};
-};
-template <> struct typed_light_names<apse::ParallelMap> {
-    static constexpr const char* value[2][2] = {{"DiskLight<ParallelMap>", "DiskLight<ParallelMap>(frame)"},
-                                                {"DiskLight<Cosine<ParallelMap>>", "DiskLight<Cosine<ParallelMap>>(frame)"}};
-};
-template <> struct typed_light_names<apse::TabulatedMap> {
-    static constexpr const char* value[2][2] = {{"DiskLight<TabulatedMap>", "DiskLight<TabulatedMap>(frame)"},
-                                                {"DiskLight<Cosine<TabulatedMap>>", "DiskLight<Cosine<TabulatedMap>>(frame)"}};
-};
-template <> struct typed_light_names<apse::TabulatedLdRadialMap> {
-    static constexpr const char* value[2][2] = {{"DiskLight<TabLdRadialMap>", "DiskLight<TabLdRadialMap>(frame)"},
-                                                {"DiskLight<Cosine<TabLdRadial>>", "DiskLight<Cosine<TabLdRadial>>(frame)"}};
-};
+/// The printed names of MapKind's maps (in its order) and of the map types.
+constexpr const char* kind_names[5] = {"radial", "ld_radial", "parallel", "tabulated", "tabulated_ld"};
+template <template <class> class Map> constexpr const char* map_name = "?";
+template <> constexpr const char* map_name<apse::RadialMap> = "RadialMap";
+template <> constexpr const char* map_name<apse::LdRadialMap> = "LdRadialMap";
+template <> constexpr const char* map_name<apse::ParallelMap> = "ParallelMap";
+template <> constexpr const char* map_name<apse::TabulatedMap> = "TabulatedMap";
+template <> constexpr const char* map_name<apse::TabulatedLdRadialMap> = "TabulatedLdRadialMap";
 
 /// The map chosen at run time (runtime_sampler.hpp), plain or with the scene's receiver normal;
 /// the tabulated kinds read the default table.
 template <apse::MapKind K, bool Cosine> struct Runtime {
-    static constexpr const char* name = runtime_names[int(K)][Cosine];
+    static inline const std::string name =
+        std::string("RuntimeSampler ") + kind_names[int(K)] + (Cosine ? ", cosine" : "");
     static constexpr bool invertible = true, has_solid_angle = false, counts = false;
     static constexpr Shape shape = Shape::disk;
     static constexpr int blocks = no_blocks;
@@ -227,7 +202,8 @@ template <apse::MapKind K, bool Cosine> struct Runtime {
 /// DiskLight<RuntimeSampler>: the map chosen at run time, plain or with the receiver's normal
 /// (the tabulated kinds read the default table).
 template <apse::MapKind K, bool Cosine> struct Light {
-    static constexpr const char* name = runtime_light_names[int(K)][Cosine];
+    static inline const std::string name =
+        std::string("DiskLight<Runtime> ") + kind_names[int(K)] + (Cosine ? ", cosine" : "");
     static constexpr bool invertible = true, has_solid_angle = true, counts = false;
     static constexpr Shape shape = Shape::disk;
     static constexpr int blocks = no_blocks;
@@ -241,7 +217,8 @@ template <apse::MapKind K, bool Cosine> struct Light {
 /// DiskLight over the map Map chosen at compile time (Tab: it reads the default table), plain or
 /// CosineWeighted<Map> with the receiver's normal; from (c, n, r) or from the stored DiskFrame.
 template <template <class> class Map, bool Tab, bool Cosine, bool Framed = false> struct TypedLight {
-    static constexpr const char* name = typed_light_names<Map>::value[Cosine][Framed];
+    static inline const std::string name = std::string("DiskLight<") + (Cosine ? "Cosine<" : "") + map_name<Map> +
+                                           (Cosine ? ">>" : ">") + (Framed ? "(frame)" : "");
     static constexpr bool invertible = true, has_solid_angle = true, counts = false;
     static constexpr Shape shape = Shape::disk;
     static constexpr int blocks = no_blocks;
@@ -445,7 +422,7 @@ template <class F, class T> void check_normal() {
     CHECK(worst_pdf <= Budget<T>::pdf);
     CHECK(worst_u <= Budget<T>::round_trip);
     std::printf("[%s] %-42s accepted %2d/49, max |pdf(sample)/pdf - 1| %.1e, max |invert(sample(u)) - u| %.1e\n",
-                sizeof(T) == 4 ? "float" : "double", F::name, accepted, worst_pdf, worst_u);
+                sizeof(T) == 4 ? "float" : "double", std::string(F::name).c_str(), accepted, worst_pdf, worst_u);
     // away from the light: density 0
     CHECK(s.pdf(V3<T>(0, 0, 1)) == T(0));
     CHECK(s.pdf(V3<T>(T(-1), T(0), T(-0.1))) == T(0));
