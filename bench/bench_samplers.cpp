@@ -46,6 +46,7 @@
 #include <apse/comparison.hpp>
 #include <apse/maps/tabulated_ld_radial.hpp>
 #include <apse/projection.hpp>
+#include <apse/runtime_sampler.hpp>
 #include <apse/sphere_light.hpp>
 #include <apse/diagnostics.hpp>
 
@@ -179,10 +180,7 @@ struct SphereConePoint : SphereTag {
 };
 /// f(v) for the tabulated maps (built with the table), f() for the others.
 template <template <class> class Map, class T, class F> APSE_BENCH_INLINE auto with_map_args(const apse::TabulationView& v, F&& f) {
-    if constexpr (std::is_constructible<Map<T>, const apse::SphericalEllipse<T>&, const apse::TabulationView&>::value)
-        return f(v);
-    else
-        return f();
+    return apse::detail::with_table_if_read<Map<T>>(v, f);
 }
 /// project_sphere + Map<T> (the tabulated maps take the table).
 template <template <class> class Map, class T>

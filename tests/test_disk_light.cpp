@@ -60,10 +60,7 @@ template <class T, class F> void with_map_type(apse::MapKind m, F&& f) {
     FAIL("unknown MapKind " << int(m));
 }
 
-/// Whether Map is built from an ellipse and a table (the tabulated maps).
-template <class Map>
-constexpr bool reads_table =
-    std::is_constructible<Map, const apse::SphericalEllipse<typename Map::vec3::value_type>&, const apse::TabulationView&>::value;
+using apse::detail::reads_table;  // whether Map is built from an ellipse and a table
 
 /// DiskLight<Map> of the disk (c, n, r) seen from o; the tabulated maps read `table`.
 template <class Map, class T>

@@ -214,9 +214,10 @@ template <apse::MapKind K, bool Cosine> struct Light {
     }
 };
 
-/// DiskLight over the map Map chosen at compile time (Tab: it reads the default table), plain or
-/// CosineWeighted<Map> with the receiver's normal; from (c, n, r) or from the stored DiskFrame.
-template <template <class> class Map, bool Tab, bool Cosine, bool Framed = false> struct TypedLight {
+/// DiskLight over the map Map chosen at compile time (the tabulated maps read the default table),
+/// plain or CosineWeighted<Map> with the receiver's normal; from (c, n, r) or from the stored
+/// DiskFrame.
+template <template <class> class Map, bool Cosine, bool Framed = false> struct TypedLight {
     static inline const std::string name = std::string("DiskLight<") + (Cosine ? "Cosine<" : "") + map_name<Map> +
                                            (Cosine ? ">>" : ">") + (Framed ? "(frame)" : "");
     static constexpr bool invertible = true, has_solid_angle = true, counts = false;
@@ -228,10 +229,10 @@ template <template <class> class Map, bool Tab, bool Cosine, bool Framed = false
         else return apse::DiskLight<S>(s.o, s.c, s.n, s.r, args...);
     }
     template <class T> static auto make(const Scene<T>& s) {
-        if constexpr (Tab && Cosine) return light(s, apse_test::default_table().view(), s.receiver);
-        else if constexpr (Tab) return light(s, apse_test::default_table().view());
-        else if constexpr (Cosine) return light(s, s.receiver);
-        else return light(s);
+        return apse::detail::with_table_if_read<Map<T>>(apse_test::default_table().view(), [&](const auto&... table) {
+            if constexpr (Cosine) return light(s, table..., s.receiver);
+            else return light(s, table...);
+        });
     }
 };
 
@@ -523,22 +524,22 @@ TEMPLATE_TEST_CASE("sampler concept: DiskLight<Sampler>, each map, plain and cos
                                    std::declval<const V2<T>&>())),
                                apse::PointSample<T>>::value,
                   "DiskLight::sample -> PointSample");
-    check_sampler<TypedLight<apse::RadialMap, false, false>, T>();
-    check_sampler<TypedLight<apse::LdRadialMap, false, false>, T>();
-    check_sampler<TypedLight<apse::ParallelMap, false, false>, T>();
-    check_sampler<TypedLight<apse::TabulatedMap, true, false>, T>();
-    check_sampler<TypedLight<apse::TabulatedLdRadialMap, true, false>, T>();
-    check_sampler<TypedLight<apse::RadialMap, false, true>, T>();
-    check_sampler<TypedLight<apse::LdRadialMap, false, true>, T>();
-    check_sampler<TypedLight<apse::ParallelMap, false, true>, T>();
-    check_sampler<TypedLight<apse::TabulatedMap, true, true>, T>();
-    check_sampler<TypedLight<apse::TabulatedLdRadialMap, true, true>, T>();
+    check_sampler<TypedLight<apse::RadialMap, false>, T>();
+    check_sampler<TypedLight<apse::LdRadialMap, false>, T>();
+    check_sampler<TypedLight<apse::ParallelMap, false>, T>();
+    check_sampler<TypedLight<apse::TabulatedMap, false>, T>();
+    check_sampler<TypedLight<apse::TabulatedLdRadialMap, false>, T>();
+    check_sampler<TypedLight<apse::RadialMap, true>, T>();
+    check_sampler<TypedLight<apse::LdRadialMap, true>, T>();
+    check_sampler<TypedLight<apse::ParallelMap, true>, T>();
+    check_sampler<TypedLight<apse::TabulatedMap, true>, T>();
+    check_sampler<TypedLight<apse::TabulatedLdRadialMap, true>, T>();
     // from the light's stored frame
-    check_sampler<TypedLight<apse::LdRadialMap, false, false, true>, T>();
-    check_sampler<TypedLight<apse::TabulatedLdRadialMap, true, true, true>, T>();
+    check_sampler<TypedLight<apse::LdRadialMap, false, true>, T>();
+    check_sampler<TypedLight<apse::TabulatedLdRadialMap, true, true>, T>();
     // below the receiver's horizon
-    check_degenerate<TypedLight<apse::LdRadialMap, false, true>, T>(Degenerate::behind);
-    check_degenerate<TypedLight<apse::TabulatedLdRadialMap, true, true>, T>(Degenerate::behind);
+    check_degenerate<TypedLight<apse::LdRadialMap, true>, T>(Degenerate::behind);
+    check_degenerate<TypedLight<apse::TabulatedLdRadialMap, true>, T>(Degenerate::behind);
 }
 
 TEMPLATE_TEST_CASE("sampler concept: point_on_plane completes a direction sample", "[concept]", float, double) {

@@ -110,7 +110,7 @@ Image render_sphere_reference(const Scene& scene, int width, int height, int spp
                               Progress& progress, Image& exact) {
     Image img(width, height);
     exact = Image(width, height);
-    const SphereTabulatedFactory factory{tabulation_view()};
+    const SphereMapFactory factory{map_choice(Kind::tabulated)};
     parallel_rows(height, threads, [&](int y) {
         for (int x = 0; x < width; ++x) {
             vec3 o, d, p, n;

@@ -15,7 +15,7 @@
 #include <apse/apse.hpp>
 #include <apse/baselines/area.hpp>
 #include <apse/baselines/gamito.hpp>
-#include <apse/comparison.hpp>
+#include <apse/runtime_sampler.hpp>
 
 // pbrt-v4's uniform cone sampling of sphere lights, the reference apse's benchmarks use too.
 #include "../../bench/support/cone_sampler.hpp"
@@ -93,29 +93,36 @@ struct GamitoFactory {  // Gamito's single shot (the paper's baseline), unbiased
         return wrap(apse::GamitoSingleShot<float>(o, L.center, L.normal, L.radius), o, L);
     }
 };
-template <class Map> struct MapFactory {
-    auto operator()(const vec3& o, const vec3&, const Disk& L) const {
-        return apse::DiskLight<Map>(o, L.center, L.normal, L.radius);
-    }
+/// The apse samplers, chosen at run time as a scene file chooses them (apse::RuntimeSampler):
+/// the map `map`, cosine-weighted over it when `cosine` (CosineWeighted: directions drawn ∝ the
+/// receiver's clamped cosine; with a zero normal, in the medium, the plain map's samples).
+struct MapChoice {
+    apse::MapKind map;
+    bool cosine;
+    apse::TabulationView view;  ///< read by the tabulated maps only
 };
-
-struct TabulatedFactory {  // the paper's default: tabulated LD-radial (code `concentrictab`)
-    apse::TabulationView view;
-    auto operator()(const vec3& o, const vec3&, const Disk& L) const {
-        return apse::DiskLight<apse::TabulatedLdRadialMap<float>>(o, L.center, L.normal, L.radius, view);
-    }
-};
-/// Cosine-weighted over the tabulated LD-radial map (CosineWeighted): directions drawn ∝ the
-/// receiver's clamped cosine; with a zero normal (the medium) it is the plain tabulated map.
-struct CosineFactory {
-    apse::TabulationView view;
+struct MapFactory {
+    MapChoice choice;
     auto operator()(const vec3& o, const vec3& n, const Disk& L) const {
-        return apse::DiskLight<apse::CosineWeighted<apse::TabulatedLdRadialMap<float>>>(o, L.center, L.normal,
-                                                                                        L.radius, view, n);
+        using Light = apse::DiskLight<apse::RuntimeSampler<float>>;
+        return choice.cosine ? Light(o, L.center, L.normal, L.radius, choice.map, choice.view, n)
+                             : Light(o, L.center, L.normal, L.radius, choice.map, choice.view);
     }
 };
 /// The shared table (apse::default_table(): built once, thread-safely; read-only while rendering).
 inline apse::TabulationView tabulation_view() { return apse::default_table().view(); }
+
+/// The apse sampler of kind k (radial, LD-radial, parallel, tabulated — the paper's default,
+/// tabulated LD-radial, code `concentrictab` — or cosine-weighted over the tabulated one).
+inline MapChoice map_choice(Kind k) {
+    switch (k) {
+    case Kind::radial: return {apse::MapKind::radial, false, tabulation_view()};
+    case Kind::ld_radial: return {apse::MapKind::ld_radial, false, tabulation_view()};
+    case Kind::parallel: return {apse::MapKind::parallel, false, tabulation_view()};
+    case Kind::cosine: return {apse::MapKind::tabulated_ld_radial, true, tabulation_view()};
+    default: return {apse::MapKind::tabulated_ld_radial, false, tabulation_view()};
+    }
+}
 
 /// Sphere-light factories: `(o, receiver normal, sphere) -> sampler with sample(u) -> LightSample`
 /// (apse::SphereLight gives the point on the sphere and the shadow-ray distance itself).
@@ -124,38 +131,24 @@ struct ConeFactory {  // pbrt-v4: uniform in the cone of directions the sphere s
         return apse_bench::ConeSampler<float, true>(o, L.center, L.radius);
     }
 };
-template <class Map> struct SphereMapFactory {
-    auto operator()(const vec3& o, const vec3&, const SphereEmitter& L) const {
-        return apse::SphereLight<Map>(o, L.center, L.radius);
-    }
-};
-struct SphereTabulatedFactory {
-    apse::TabulationView view;
-    auto operator()(const vec3& o, const vec3&, const SphereEmitter& L) const {
-        return apse::SphereLight<apse::TabulatedLdRadialMap<float>>(o, L.center, L.radius, view);
-    }
-};
-/// Exactly ∝ the receiver's clamped cosine over the cap, also where the horizon cuts it.
-struct SphereCosineFactory {
-    apse::TabulationView view;
+/// The apse samplers of sphere lights (apse::SphereLight over the runtime choice).
+struct SphereMapFactory {
+    MapChoice choice;
     auto operator()(const vec3& o, const vec3& n, const SphereEmitter& L) const {
-        return apse::SphereLight<apse::CosineWeighted<apse::TabulatedLdRadialMap<float>>>(o, L.center, L.radius,
-                                                                                          view, n);
+        using Light = apse::SphereLight<apse::RuntimeSampler<float>>;
+        return choice.cosine ? Light(o, L.center, L.radius, choice.map, choice.view, n)
+                             : Light(o, L.center, L.radius, choice.map, choice.view);
     }
 };
 
-/// Calls f(factory) with the disk-light factory of kind k (one template instantiation per
-/// kind); false (f not called) for a kind without one (cone).
+/// Calls f(factory) with the disk-light factory of kind k (one template instantiation for each
+/// baseline, one for all the apse samplers); false (f not called) for a kind without one (cone).
 template <class F> bool with_factory(Kind k, F&& f) {
     switch (k) {
     case Kind::area: f(AreaFactory{}); return true;
     case Kind::gamito: f(GamitoFactory{}); return true;
-    case Kind::radial: f(MapFactory<apse::RadialMap<float>>{}); return true;
-    case Kind::ld_radial: f(MapFactory<apse::LdRadialMap<float>>{}); return true;
-    case Kind::parallel: f(MapFactory<apse::ParallelMap<float>>{}); return true;
-    case Kind::tabulated: f(TabulatedFactory{tabulation_view()}); return true;
-    case Kind::cosine: f(CosineFactory{tabulation_view()}); return true;
     case Kind::cone: return false;
+    default: f(MapFactory{map_choice(k)}); return true;
     }
     return false;
 }
@@ -165,13 +158,9 @@ template <class F> bool with_factory(Kind k, F&& f) {
 template <class F> bool with_sphere_factory(Kind k, F&& f) {
     switch (k) {
     case Kind::cone: f(ConeFactory{}); return true;
-    case Kind::radial: f(SphereMapFactory<apse::RadialMap<float>>{}); return true;
-    case Kind::ld_radial: f(SphereMapFactory<apse::LdRadialMap<float>>{}); return true;
-    case Kind::parallel: f(SphereMapFactory<apse::ParallelMap<float>>{}); return true;
-    case Kind::tabulated: f(SphereTabulatedFactory{tabulation_view()}); return true;
-    case Kind::cosine: f(SphereCosineFactory{tabulation_view()}); return true;
     case Kind::area:
     case Kind::gamito: return false;
+    default: f(SphereMapFactory{map_choice(k)}); return true;
     }
     return false;
 }

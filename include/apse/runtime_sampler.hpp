@@ -86,13 +86,23 @@ template <class... Maps> struct OneOfPlainAndCosine<TypeList<Maps...>> {
     using type = OneOf<Maps..., CosineWeighted<Maps>...>;
 };
 
+/// True if the map `Map` is built from (ellipse, table): the tabulated maps.
+template <class Map>
+constexpr bool reads_table =
+    std::is_constructible<Map, const SphericalEllipse<typename Map::vec3::value_type>&, const TabulationView&>::value;
+
+/// f(table) for the maps that read a table, f() for the others: the arguments after the
+/// ellipse (or after a light's geometry) that build the map `Map`.
+template <class Map, class F> APSE_HOT_INLINE decltype(auto) with_table_if_read(const TabulationView& table, F&& f) noexcept {
+    if constexpr (reads_table<Map>) return f(table);
+    else return f();
+}
+
 /// Map(ellipse, table) for the maps that read a table, Map(ellipse) for the others.
 template <class Map, class T>
 APSE_FUNC Map make_map(const SphericalEllipse<T>& e, const TabulationView& table) noexcept {
-    if constexpr (std::is_constructible<Map, const SphericalEllipse<T>&, const TabulationView&>::value)
-        return Map(e, table);
-    else
-        return Map(e);
+    if constexpr (reads_table<Map>) return Map(e, table);
+    else return Map(e);
 }
 
 }  // namespace detail
