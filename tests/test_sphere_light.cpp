@@ -9,6 +9,7 @@
 #include <apse/comparison.hpp>
 #include <apse/maps/tabulated_ld_radial.hpp>
 #include <apse/math.hpp>
+#include <apse/runtime_sampler.hpp>
 
 #include "support/default_table.hpp"
 #include "support/map_testing.hpp"
@@ -244,6 +245,16 @@ TEMPLATE_TEST_CASE("sphere light: the samples, pdfs and inverts of its sampler b
         check_same_as_sampler<apse::CosineWeighted<apse::ParallelMap<T>>>(o, c, r, us, ws, n);
         check_same_as_sampler<apse::CosineWeighted<apse::TabulatedLdRadialMap<T>>>(o, c, r, us, ws,
                                                                                    k % 10 == 3 ? no_table : table, n);
+        // the map chosen at run time: the light holds the same choice among the cap samplers
+        for (int m = 0; m < 5; ++m) {
+            const apse::MapKind kind = apse::MapKind(m);
+            const apse::TabulationView view = k % 10 == 3 ? no_table : table;
+            INFO("MapKind " << m);
+            check_same_as_sampler<apse::RuntimeSampler<T>>(o, c, r, us, ws, kind, view);
+            check_same_as_sampler<apse::RuntimeSampler<T>>(o, c, r, us, ws, kind, view, n);
+            const apse::SphereLight<apse::RuntimeSampler<T>> runtime(o, c, r, kind, view, n);
+            CHECK(runtime.cosine_weighted() == apse::RuntimeSampler<T>(apse::project_sphere(o, c, r), kind, view, n).weighted());
+        }
         const apse::SphereLight<apse::CosineWeighted<apse::LdRadialMap<T>>> light(o, c, r, n);
         const apse::CosineWeighted<apse::LdRadialMap<T>> ref(apse::project_sphere(o, c, r), n);
         CHECK(light.cosine_weighted() == ref.weighted());

@@ -14,7 +14,8 @@
 ///     apse::DiskLight<apse::RuntimeSampler<float>> light(o, center, normal, radius, kind, table);
 ///     apse::SphereLight<apse::RuntimeSampler<float>> ball(o, c, r, kind, table, n_r);  // cosine-weighted
 ///
-/// Adding a map: its header, its test, and one entry in MapKind with its type in `Maps` below.
+/// Adding a map: its header, its test, and one entry in MapKind with its type in
+/// detail::RuntimeMaps below.
 
 #include <new>
 #include <type_traits>
@@ -34,7 +35,7 @@
 
 namespace apse {
 
-/// The maps a RuntimeSampler can be, in the order of `RuntimeSampler::Maps`.
+/// The maps a RuntimeSampler can be, in the order of detail::RuntimeMaps.
 enum class MapKind : int {
     radial,               ///< RadialMap (comparison.hpp; docs/math.md §4)
     ld_radial,            ///< LdRadialMap: exact, continuous on the whole square
@@ -81,9 +82,9 @@ template <class S0, class... Rest> union OneOf<S0, Rest...> {
     }
 };
 
-template <class List> struct OneOfPlainAndCosine;
-template <class... Maps> struct OneOfPlainAndCosine<TypeList<Maps...>> {
-    using type = OneOf<Maps..., CosineWeighted<Maps>...>;
+template <class Plain, class Cosine> struct OneOfBoth;
+template <class... P, class... C> struct OneOfBoth<TypeList<P...>, TypeList<C...>> {
+    using type = OneOf<P..., C...>;
 };
 
 /// True if the map `Map` is built from (ellipse, table): the tabulated maps.
@@ -98,11 +99,25 @@ template <class Map, class F> APSE_HOT_INLINE decltype(auto) with_table_if_read(
     else return f();
 }
 
-/// Map(ellipse, table) for the maps that read a table, Map(ellipse) for the others.
-template <class Map, class T>
-APSE_FUNC Map make_map(const SphericalEllipse<T>& e, const TabulationView& table) noexcept {
-    if constexpr (reads_table<Map>) return Map(e, table);
-    else return Map(e);
+/// True if the sampler S takes a receiver normal after the ellipse (and the table): the
+/// cosine-weighted samplers.
+template <class S, class T>
+constexpr bool takes_normal =
+    std::is_constructible<S, const SphericalEllipse<T>&, const glm::vec<3, T>&>::value ||
+    std::is_constructible<S, const SphericalEllipse<T>&, const TabulationView&, const glm::vec<3, T>&>::value;
+
+/// The sampler S of the ellipse `e`: S(e[, table][, normal]), with the table where S reads one
+/// and the receiver normal where S takes one (the cosine-weighted samplers).
+template <class S, class T>
+APSE_FUNC S make_sampler(const SphericalEllipse<T>& e, const TabulationView& table, const glm::vec<3, T>& normal) noexcept {
+    if constexpr (std::is_constructible<S, const SphericalEllipse<T>&, const TabulationView&, const glm::vec<3, T>&>::value)
+        return S(e, table, normal);
+    else if constexpr (takes_normal<S, T>)
+        return S(e, normal);
+    else if constexpr (reads_table<S>)
+        return S(e, table);
+    else
+        return S(e);
 }
 
 }  // namespace detail
@@ -114,27 +129,22 @@ APSE_FUNC Map make_map(const SphericalEllipse<T>& e, const TabulationView& table
 #pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
 #endif
 
-/// A sampler of a spherical ellipse whose map (MapKind) and cosine weighting are chosen at run
-/// time: exactly the samples, pdf and invert of the map — or of CosineWeighted over it — built
-/// from the same arguments. The sampler concept (sample / pdf / invert / empty / ellipse), so
-/// it plugs into DiskLight and SphereLight. Holds one sampler in a union (its size is the
-/// largest's); trivially copyable. An out-of-range kind gives the empty sampler.
-template <class T> class RuntimeSampler {
-    static_assert(detail::is_real_type<T>(), "apse: RuntimeSampler<T>: T must be float or double");
+namespace detail {
 
+/// The sampler chosen at run time among `Plain` (a TypeList of samplers built from an ellipse,
+/// and a table if they read one, in MapKind's order) and `Cosine` (their cosine-weighted
+/// counterparts, built with the receiver normal too): RuntimeSampler over the maps, and its
+/// CapSampler over what they do on a cap. One sampler in a union (its size is the largest's);
+/// trivially copyable. An out-of-range kind gives the empty sampler.
+template <class T, class Plain, class Cosine> class RuntimeChoice {
 public:
     using vec2 = glm::vec<2, T>;  ///< a point of the unit square
     using vec3 = glm::vec<3, T>;  ///< a 3-D vector (direction, point or normal)
-    /// What SphereLight holds: the sampler itself (every map takes its closed forms on a cap).
-    using CapSampler = RuntimeSampler;
-    /// The maps, in MapKind's order.
-    using Maps = detail::TypeList<detail::RadialMap<T>, LdRadialMap<T>, ParallelMap<T>, detail::TabulatedMap<T>,
-                                  TabulatedLdRadialMap<T>>;
 
     /// The map `kind` of `ellipse`, plain (the tabulated maps read `table`; without a valid
     /// table they are empty).
-    APSE_NOINLINE APSE_FUNC RuntimeSampler(const SphericalEllipse<T>& ellipse, MapKind kind,
-                                           const TabulationView& table = TabulationView{nullptr, 0, 0, 0}) noexcept
+    APSE_NOINLINE APSE_FUNC RuntimeChoice(const SphericalEllipse<T>& ellipse, MapKind kind,
+                                          const TabulationView& table = TabulationView{nullptr, 0, 0, 0}) noexcept
         : kind_(kind), cosine_(false) {
         build(ellipse, table, nullptr);
     }
@@ -142,15 +152,15 @@ public:
     /// CosineWeighted over the map `kind` of `ellipse`, for the receiver normal
     /// `receiver_normal` (CosineWeighted's contract: a zero or non-finite normal gives the plain
     /// map's samples, weighted() false).
-    APSE_NOINLINE APSE_FUNC RuntimeSampler(const SphericalEllipse<T>& ellipse, MapKind kind, const TabulationView& table,
-                                           const vec3& receiver_normal) noexcept
+    APSE_NOINLINE APSE_FUNC RuntimeChoice(const SphericalEllipse<T>& ellipse, MapKind kind, const TabulationView& table,
+                                          const vec3& receiver_normal) noexcept
         : kind_(kind), cosine_(true) {
         build(ellipse, table, &receiver_normal);
     }
 
     /// The same over an exact map, without a table (a tabulated kind gives the empty sampler).
-    APSE_FUNC RuntimeSampler(const SphericalEllipse<T>& ellipse, MapKind kind, const vec3& receiver_normal) noexcept
-        : RuntimeSampler(ellipse, kind, TabulationView{nullptr, 0, 0, 0}, receiver_normal) {}
+    APSE_FUNC RuntimeChoice(const SphericalEllipse<T>& ellipse, MapKind kind, const vec3& receiver_normal) noexcept
+        : RuntimeChoice(ellipse, kind, TabulationView{nullptr, 0, 0, 0}, receiver_normal) {}
 
     /// The map chosen.
     APSE_FUNC MapKind kind() const noexcept { return kind_; }
@@ -189,7 +199,8 @@ public:
     }
 
 private:
-    static constexpr int map_count = Maps::size;
+    static constexpr int map_count = Plain::size;
+    static_assert(Plain::size == Cosine::size, "one cosine-weighted sampler per map");
 
     APSE_FUNC int index() const noexcept { return int(kind_) + (cosine_ ? map_count : 0); }
 
@@ -202,22 +213,61 @@ private:
             build(SphericalEllipse<T>::make_empty(), table, n);
             return;
         }
-        samplers_.emplace(index(), [&](auto* tag) { return make(tag, e, table, n); });
-    }
-
-    template <class Map>
-    static APSE_FUNC Map make(Map*, const SphericalEllipse<T>& e, const TabulationView& table, const vec3*) noexcept {
-        return detail::make_map<Map>(e, table);
-    }
-    template <class Map, int Nodes>
-    static APSE_FUNC CosineWeighted<Map, Nodes> make(CosineWeighted<Map, Nodes>*, const SphericalEllipse<T>& e,
-                                                     const TabulationView& table, const vec3* n) noexcept {
-        return CosineWeighted<Map, Nodes>(detail::make_map<Map>(e, table), n ? *n : vec3(T(0)));
+        samplers_.emplace(index(), [&](auto* tag) {
+            return detail::make_sampler<std::remove_pointer_t<decltype(tag)>>(e, table, n ? *n : vec3(T(0)));
+        });
     }
 
     MapKind kind_;
     bool cosine_;
-    typename detail::OneOfPlainAndCosine<Maps>::type samplers_;
+    typename detail::OneOfBoth<Plain, Cosine>::type samplers_;
+};
+
+}  // namespace detail
+
+namespace detail {
+
+/// The maps a RuntimeSampler can be, in MapKind's order.
+template <class T>
+using RuntimeMaps = TypeList<RadialMap<T>, LdRadialMap<T>, ParallelMap<T>, TabulatedMap<T>, TabulatedLdRadialMap<T>>;
+
+/// CosineWeighted over each sampler of a TypeList.
+template <class List> struct CosineOf;
+template <class... S> struct CosineOf<TypeList<S...>> {
+    using type = TypeList<CosineWeighted<S>...>;
+};
+
+/// The CapSampler of each sampler of a TypeList.
+template <class List> struct CapSamplersOf;
+template <class... S> struct CapSamplersOf<TypeList<S...>> {
+    using type = TypeList<typename S::CapSampler...>;
+};
+
+/// RuntimeSampler's choice: the maps and CosineWeighted over each.
+template <class T> using RuntimeMapChoice = RuntimeChoice<T, RuntimeMaps<T>, typename CosineOf<RuntimeMaps<T>>::type>;
+
+}  // namespace detail
+
+/// A sampler of a spherical ellipse whose map (MapKind) and cosine weighting are chosen at run
+/// time: exactly the samples, pdf and invert of the map — or of CosineWeighted over it — built
+/// from the same arguments (the constructors of detail::RuntimeChoice: ellipse, kind, then the
+/// table, then the receiver normal). The sampler concept (sample / pdf / invert / empty /
+/// ellipse), so it plugs into DiskLight and SphereLight; in SphereLight it holds what each map
+/// does on a cap (CapSampler), as SphereLight<Map> does. Holds one sampler in a union (its size
+/// is the largest's); trivially copyable. An out-of-range kind gives the empty sampler.
+template <class T> class RuntimeSampler : public detail::RuntimeMapChoice<T> {
+    static_assert(detail::is_real_type<T>(), "apse: RuntimeSampler<T>: T must be float or double");
+
+public:
+    /// The maps, in MapKind's order.
+    using Maps = detail::RuntimeMaps<T>;
+    /// What SphereLight holds: the same choice among the maps' cap samplers (maps/cap.hpp) and
+    /// CosineWeighted's, built from the same arguments.
+    using CapSampler = detail::RuntimeChoice<T, typename detail::CapSamplersOf<Maps>::type,
+                                             typename detail::CapSamplersOf<typename detail::CosineOf<Maps>::type>::type>;
+
+    using Base = detail::RuntimeMapChoice<T>;  ///< the constructors' class
+    using Base::Base;
 };
 
 #if defined(__GNUC__) && !defined(__clang__) && !defined(__CUDACC__)
