@@ -278,13 +278,9 @@ double demo_row(const std::vector<Receiver>& rs, int pixels, const Light& L, int
 }  // namespace
 
 int main(int argc, char** argv) {
-    std::string page;
-    if (argc > 2 && std::string(argv[1]) == "--into") {
-        page = argv[2];
-        argv += 2;
-        argc -= 2;
-    }
-    const int trials = argc > 1 ? std::atoi(argv[1]) : 8;
+    const apse_tools::ToolArguments args = apse_tools::tool_arguments(argc, argv);
+    const std::string& page = args.page;
+    const int trials = !args.rest.empty() ? std::atoi(args.rest[0].c_str()) : 8;
     using namespace apse;
     const Light Lp{dvec3(0.0, 1.05, 0.0), glm::normalize(dvec3(1.0, 0.0, 0.35)), 1.0};
     std::vector<Receiver> plane;
@@ -313,7 +309,7 @@ int main(int argc, char** argv) {
         if (!(lo < -0.05 && hi > 0.05)) continue;
         strad.push_back({p, n, quadrature(p, n, Ls, 1000)});
     }
-    if (argc > 2 && std::string(argv[2]) == "demo") {
+    if (args.rest.size() > 1 && args.rest[1] == "demo") {
         demo_analysis<double>(Lp, trials, false);  // printed on the console
         demo_analysis<double>(Lp, trials, true);
         demo_analysis<float>(Lp, trials, true);

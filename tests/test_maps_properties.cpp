@@ -9,7 +9,7 @@
 #include <apse/math.hpp>
 #include <apse/diagnostics.hpp>
 
-#include "support/map_testing.hpp"
+#include "support/maps_measures.hpp"
 
 #include "support/catch.hpp"
 
@@ -24,142 +24,51 @@ namespace {
 template <class T> using Vec2 = glm::vec<2, T>;
 template <class T> using Vec3 = glm::vec<3, T>;
 
-const double kHalfPi = 1.57079632679489661923;
+/// The shapes of the geometric tests (apse_test::map_shapes): tiny (alpha = 1e-5) to nearly
+/// hemispherical (alpha = pi/2 - 1e-4), round to very thin (beta/alpha = 1e-4).
+std::vector<std::pair<double, double>> shapes() { return apse_test::map_shapes(); }
 
-/// The shapes of the issue: tiny (alpha = 1e-5) to nearly hemispherical (alpha = pi/2 - 1e-4),
-/// round to very thin (beta/alpha = 1e-4), as (tan alpha, tan beta).
-std::vector<std::pair<double, double>> shapes() {
-    std::vector<std::pair<double, double>> s;
-    for (double alpha : {1e-5, 0.05, 0.4, 1.0, 1.4, kHalfPi - 1e-4})
-        for (double ratio : {1.0, 0.5, 0.05, 1e-4}) s.emplace_back(std::tan(alpha), std::tan(alpha * ratio));
-    return s;
-}
-
-template <class T> apse::SphericalEllipse<T> local_ellipse(double ta, double tb) {
-    return apse::SphericalEllipse<T>::from_tangents(Vec3<T>(1, 0, 0), Vec3<T>(0, 1, 0), Vec3<T>(0, 0, 1), T(ta), T(tb));
-}
-
-/// Calls f(name, map) for each of the three maps of ellipse e.
-template <class T, class F> void for_each_map(const apse::SphericalEllipse<T>& e, F&& f) {
-    f(std::string("radial"), apse::RadialMap<T>(e));
-    f(std::string("ld_radial"), apse::LdRadialMap<T>(e));
-    f(std::string("parallel"), apse::ParallelMap<T>(e));
-}
-
-/// Angle between two directions (any length), computed in double.
-template <class T> double angle(const Vec3<T>& a, const Vec3<T>& b) {
-    const glm::dvec3 x(a), y(b);
-    return std::atan2(glm::length(glm::cross(x, y)), glm::dot(x, y));
-}
-
-/// Points where a map is not differentiable: the radial maps' quadrant folds (u1 = k/4 for the
-/// radial map; the concentric map's diagonals for LD-radial), the parallel fold at u1 = 1/2 is
-/// smooth. Finite differences must not straddle them.
-bool near_kink(const std::string& name, double u1, double u2, double h) {
-    if (name == "radial") return std::fabs(4 * u1 - std::round(4 * u1)) < 8 * h;
-    if (name == "ld_radial") {
-        const double a = 2 * u1 - 1, b = 2 * u2 - 1;
-        return std::fabs(std::fabs(a) - std::fabs(b)) < 8 * h || std::fabs(a) < 8 * h || std::fabs(b) < 8 * h;
-    }
-    return false;
-}
+using apse_test::angle;
+using apse_test::for_each_map;
+using apse_test::local_ellipse;
 
 }  // namespace
 
 TEMPLATE_TEST_CASE("maps preserve area: Jacobian equals the solid angle", "[maps][jacobian]", float, double) {
     using T = TestType;
-    // |dw/du1 x dw/du2| by central differences of the gnomonic coordinates (x/z, y/z) (accurate
-    // to relative rounding even when z rounds to 1), times z^3 (the gnomonic area element).
-    // Richardson-extrapolated (O(h^4)) differences. double: h = 1e-4, truncation ~h^4 * (derivatives
-    // of the map) and rounding ~eps/h = 2e-12: tolerance 1e-5 (the issue's goal). float: h = 2^-7;
-    // rounding ~eps/h = 1e-5 per derivative, amplified on the most eccentric shapes: 4e-3
-    // (measured 1.8e-3; double measured 3e-10).
-    const double h = sizeof(T) == 4 ? 0x1p-7 : 1e-4;
-    const double tol = sizeof(T) == 4 ? 4e-3 : 1e-5;
-    apse_test::Rng rng(4);
-    double worst = 0;
-    for (const auto& s : shapes()) {
-        const auto e = local_ellipse<T>(s.first, s.second);
-        for_each_map(e, [&](const std::string& name, const auto& map) {
-            const double omega = double(map.solid_angle());
-            for (int i = 0; i < 24; ++i) {
-                const double u1 = 0.05 + 0.9 * rng.uniform<double>(), u2 = 0.05 + 0.9 * rng.uniform<double>();
-                if (near_kink(name, u1, u2, 2 * h)) continue;
-                auto gnomonic = [&](double a, double b) {
-                    const Vec3<T> w = map.sample(Vec2<T>(T(a), T(b))).direction;
-                    return glm::dvec2(double(w.x) / double(w.z), double(w.y) / double(w.z));
-                };
-                // Richardson-extrapolated central differences (steps h and 2h): O(h^4) truncation
-                auto diff = [&](double du1, double du2) {
-                    const glm::dvec2 a = (gnomonic(u1 + du1, u2 + du2) - gnomonic(u1 - du1, u2 - du2)) / (2 * h);
-                    const glm::dvec2 b = (gnomonic(u1 + 2 * du1, u2 + 2 * du2) - gnomonic(u1 - 2 * du1, u2 - 2 * du2)) / (4 * h);
-                    return (4.0 * a - b) / 3.0;
-                };
-                const glm::dvec2 d1 = diff(h, 0), d2 = diff(0, h);
-                const Vec3<T> w = map.sample(Vec2<T>(T(u1), T(u2))).direction;
-                const double z = double(w.z) / glm::length(glm::dvec3(w));
-                const double jac = std::fabs(d1.x * d2.y - d1.y * d2.x) * z * z * z;
-                const double err = std::fabs(jac - omega) / omega;
-                worst = std::max(worst, err);
-                INFO(name << " tan alpha " << s.first << " tan beta " << s.second << " u " << u1 << " " << u2
-                          << " jacobian " << jac << " omega " << omega);
-                CHECK(err <= tol);
-            }
+    // |dw/du1 x dw/du2| by Richardson-extrapolated central differences of the gnomonic coordinates
+    // (apse_test::jacobian_error). double: tolerance 1e-5 (the issue's goal). float: 4e-3, the
+    // finite differences' own rounding on the most eccentric shapes (apse_test::jacobian_tolerance).
+    const double tol = apse_test::jacobian_tolerance<T>();
+    const double worst = apse_test::jacobian_error<T>(
+        [&](const std::string& name, const std::pair<double, double>& s, double u1, double u2, double jac, double omega,
+            double err) {
+            INFO(name << " tan alpha " << s.first << " tan beta " << s.second << " u " << u1 << " " << u2
+                      << " jacobian " << jac << " omega " << omega);
+            CHECK(err <= tol);
         });
-    }
     std::printf("[%s] Jacobian max rel err %.2e\n", sizeof(T) == 4 ? "float" : "double", worst);
 }
 
 TEMPLATE_TEST_CASE("inverse round trips", "[maps][inverse]", float, double) {
     using T = TestType;
-    // invert(sample(u)) = u on [0.01, 0.99]^2 (away from the documented seams: the radial map's
-    // centre u2 = 0 and its +x seam u1 in {0, 1}, the parallel map's minor-axis ends u1 in {0, 1},
-    // LD-radial's centre). double: 1e-9 (the issue's goal; the inverse evaluates the same closed
-    // form as the solver, so the error is the solver's 4 eps of area divided by the local density,
-    // amplified near u2 = 0.01 by 1/sqrt(u2) in LD-radial). float: 2e-3, the same budget with
-    // float's eps on the most eccentric shapes (measured values printed).
+    // invert(sample(u)) = u on [0.01, 0.99]^2 (away from the documented seams): double 1e-9 (the
+    // issue's goal), float 2e-3 (apse_test::round_trip_tolerance, which explains them).
     // sample(invert(w)) = w for random directions inside: angle <= tol_w * sin(alpha) plus 4 times
     // the image of a change of u by 8 eps (the resolution of the inverse in T at u).
-    const double tol_u = sizeof(T) == 4 ? 2e-3 : 1e-9;
-    const double tol_w = sizeof(T) == 4 ? 2e-3 : 1e-9;
-    apse_test::Rng rng(5);
-    double worst_u = 0, worst_w = 0;
-    for (const auto& s : shapes()) {
-        const auto e = local_ellipse<T>(s.first, s.second);
-        const double size = s.first / std::sqrt(1 + s.first * s.first);
-        for_each_map(e, [&](const std::string& name, const auto& map) {
-            for (int i = 0; i < 64; ++i) {
-                const Vec2<T> u(T(0.01 + 0.98 * rng.uniform<double>()), T(0.01 + 0.98 * rng.uniform<double>()));
-                const auto smp = map.sample(u);
-                const Vec2<T> back = map.invert(smp.direction);
-                const double err = std::max(std::fabs(double(back.x - u.x)), std::fabs(double(back.y - u.y)));
-                worst_u = std::max(worst_u, err);
-                INFO(name << " tan alpha " << s.first << " tan beta " << s.second << " u " << u.x << " " << u.y
-                          << " -> " << back.x << " " << back.y);
-                CHECK(err <= tol_u);
-                // a direction inside: uniform in the gnomonic ellipse, shrunk by 0.999
-                const double rho = 0.999 * std::sqrt(rng.uniform<double>()), t = double(apse_test::kTwoPi) * rng.uniform<double>();
-                const glm::dvec3 g(s.first * rho * std::cos(t), s.second * rho * std::sin(t), 1.0);
-                const Vec3<T> w(glm::normalize(g));
-                const Vec2<T> uw = map.invert(w);
-                const Vec3<T> w2 = map.sample(uw).direction;
-                // resolution of u in T: how far the image moves when u moves by 8 eps, the inverse's
-                // accuracy in u (the solver stops within 4 eps of the area); directions near the
-                // horizon of nearly hemispherical ellipses live within ~1e-5 of u1 = 1 in the
-                // parallel map, where that moves the slice far
-                auto nudge = [](T v) { const T d = T(8) * apse::epsilon<T>();
-                                       return v + d <= T(1) ? v + d : v - d; };
-                const double resolution = angle(w2, map.sample(Vec2<T>(nudge(uw.x), uw.y)).direction) +
-                                          angle(w2, map.sample(Vec2<T>(uw.x, nudge(uw.y))).direction);
-                const double ew = angle(w, w2) / (tol_w * size + 4 * resolution);
-                worst_w = std::max(worst_w, angle(w, w2) / size);
-                INFO("direction round trip error " << angle(w, w2) / size << " resolution " << resolution / size);
-                CHECK(ew <= 1);
-            }
+    const double tol_u = apse_test::round_trip_tolerance<T>();
+    const double tol_w = apse_test::round_trip_direction_tolerance<T>();
+    const auto worst = apse_test::round_trip_errors<T>(
+        [&](const std::string& name, const std::pair<double, double>& s, const apse_test::RoundTripPoint<T>& p) {
+            INFO(name << " tan alpha " << s.first << " tan beta " << s.second << " u " << p.u.x << " " << p.u.y
+                      << " -> " << p.back.x << " " << p.back.y);
+            CHECK(p.error_u <= tol_u);
+            const double ew = p.angle_w / (tol_w * p.size + 4 * p.resolution);
+            INFO("direction round trip error " << p.angle_w / p.size << " resolution " << p.resolution / p.size);
+            CHECK(ew <= 1);
         });
-    }
     std::printf("[%s] round trip max err: u %.2e, direction %.2e (of sin alpha)\n",
-                sizeof(T) == 4 ? "float" : "double", worst_u, worst_w);
+                sizeof(T) == 4 ? "float" : "double", worst.u, worst.direction);
 }
 
 TEMPLATE_TEST_CASE("the square's boundary maps onto the ellipse's boundary, and the seams", "[maps][boundary]", float, double) {

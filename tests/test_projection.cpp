@@ -1,21 +1,19 @@
 // Tests of projection.hpp: disks, planar ellipses, spheres and ellipsoids against the committed
-// mpmath tables (tests/data/projection/*.csv, written by tools/gen_projection_reference.py), the
+// mpmath tables (tests/data/projection/*.csv, written by tools/gen_projection_reference.py; the
+// errors and their budget in support/projection_reference.hpp, shared with projection_report), the
 // solid angle against an independent brute-force integral over the disk, contains() against
 // ray–shape intersections, disk ≡ ellipse, scale invariance, and degenerate input.
 #include <apse/projection.hpp>
 #include <apse/math.hpp>
 
 #include "support/catch.hpp"
+#include "support/projection_reference.hpp"
 
 #include <cmath>
 #include <cstdio>
-#include <cstdlib>
 #include <cstring>
-#include <fstream>
 #include <limits>
-#include <map>
 #include <random>
-#include <sstream>
 #include <string>
 #include <vector>
 
@@ -24,123 +22,21 @@ namespace {
 template <class T> using vec3 = glm::vec<3, T>;
 using ld = long double;
 
-// ---------------------------------------------------------------------------------------------
-// the reference tables
-// ---------------------------------------------------------------------------------------------
+using apse_test::budget;
+using apse_test::Light;
+using apse_test::ReferenceLight;
+using apse_test::ReferenceLights;
+using apse_test::rel_err;
 
-struct Table {
-    std::vector<std::string> columns;
-    std::vector<std::vector<std::string>> rows;
-    int col(const std::string& name) const {
-        for (std::size_t i = 0; i < columns.size(); ++i)
-            if (columns[i] == name) return int(i);
-        FAIL("no column " << name);
-        return -1;
-    }
-};
-
-Table load(const std::string& file) {
-    std::ifstream in(std::string(APSE_TEST_DATA_DIR) + "/projection/" + file);
-    REQUIRE(in.good());
-    Table t;
-    std::string line;
-    while (std::getline(in, line)) {
-        if (line.empty() || line[0] == '#') continue;
-        std::vector<std::string> f;
-        std::stringstream ss(line);
-        std::string s;
-        while (std::getline(ss, s, ',')) f.push_back(s);
-        if (t.columns.empty()) t.columns = f;
-        else t.rows.push_back(f);
-    }
-    return t;
+/// The rows of the table of `light` (tests/data/projection, support/projection_reference.hpp).
+std::vector<ReferenceLight> load(Light light) {
+    const ReferenceLights t = apse_test::read_reference_lights(std::string(APSE_TEST_DATA_DIR) + "/projection", light);
+    INFO(t.error);
+    REQUIRE(t.error.empty());
+    return t.rows;
 }
 
-struct Row {
-    const Table* t;
-    const std::vector<std::string>* f;
-    const std::string& str(const std::string& c) const { return (*f)[std::size_t(t->col(c))]; }
-    double num(const std::string& c) const { return std::strtod(str(c).c_str(), nullptr); }
-    ld dec(const std::string& c) const { return std::strtold(str(c).c_str(), nullptr); }
-    template <class T> vec3<T> v(const std::string& p) const {
-        return vec3<T>(T(num(p + "_x")), T(num(p + "_y")), T(num(p + "_z")));
-    }
-};
-
-/// The reference spherical ellipse of one row and its condition numbers.
-struct Expected {
-    bool empty;
-    ld alpha, beta, omega;
-    vec3<double> ze, xe;
-    double k_alpha, k_beta, k_omega, k_frame;
-};
-
-Expected expected(const Row& r) {
-    Expected e{};
-    e.empty = r.str("empty") == "1";
-    if (e.empty) return e;
-    e.alpha = r.dec("alpha");
-    e.beta = r.dec("beta");
-    e.omega = r.dec("omega");
-    e.ze = vec3<double>(double(r.dec("ze_x")), double(r.dec("ze_y")), double(r.dec("ze_z")));
-    e.xe = vec3<double>(double(r.dec("xe_x")), double(r.dec("xe_y")), double(r.dec("xe_z")));
-    e.k_alpha = r.num("kappa_alpha");
-    e.k_beta = r.num("kappa_beta");
-    e.k_omega = r.num("kappa_omega");
-    e.k_frame = r.num("kappa_frame");
-    return e;
-}
-
-double rel_err(ld x, ld ref) { return double(ref == 0 ? std::fabs(x) : std::fabs(x - ref) / std::fabs(ref)); }
-
-template <class T> double vec_err(const vec3<T>& a, const vec3<double>& b) {
-    return double(glm::length(vec3<double>(a) - b));
-}
-
-/// Error budget: C eps (kappa + K): the rounding of the inputs' difference (kappa eps) plus the
-/// implementation's own few dozen roundings.
-template <class T> double budget(double kappa) {
-    return 8.0 * double(apse::epsilon<T>()) * (kappa + 64.0);
-}
-
-/// Per-case statistics printed after each table: worst relative errors, and the worst error in
-/// units of eps (kappa + 1) (the conditioning-normalised error).
-struct Stats {
-    struct Entry {
-        int n = 0;
-        double alpha = 0, beta = 0, omega = 0, frame = 0, normalised = 0, kappa = 0;
-    };
-    std::map<std::string, Entry> by_case;
-    void add(const std::string& c, double ea, double eb, double eo, double ef, double norm, double kappa) {
-        Entry& e = by_case[c];
-        ++e.n;
-        e.alpha = std::fmax(e.alpha, ea);
-        e.beta = std::fmax(e.beta, eb);
-        e.omega = std::fmax(e.omega, eo);
-        e.frame = std::fmax(e.frame, ef);
-        e.normalised = std::fmax(e.normalised, norm);
-        e.kappa = std::fmax(e.kappa, kappa);
-    }
-    void print(const char* what, const char* type) const {
-        std::printf("%-10s %-6s | %-20s %4s | %9s %9s %9s %9s | %9s | %s\n", what, type, "case", "n", "alpha", "beta",
-                    "omega", "z_e", "max kappa", "max err/(eps(kappa+1))");
-        Entry all;
-        for (const auto& kv : by_case) {
-            const Entry& e = kv.second;
-            std::printf("%-10s %-6s | %-20s %4d | %9.2e %9.2e %9.2e %9.2e | %9.2e | %.1f\n", what, type, kv.first.c_str(),
-                        e.n, e.alpha, e.beta, e.omega, e.frame, e.kappa, e.normalised);
-            all.n += e.n;
-            all.alpha = std::fmax(all.alpha, e.alpha);
-            all.beta = std::fmax(all.beta, e.beta);
-            all.omega = std::fmax(all.omega, e.omega);
-            all.frame = std::fmax(all.frame, e.frame);
-            all.kappa = std::fmax(all.kappa, e.kappa);
-            all.normalised = std::fmax(all.normalised, e.normalised);
-        }
-        std::printf("%-10s %-6s | %-20s %4d | %9.2e %9.2e %9.2e %9.2e | %9.2e | %.1f\n", what, type, "ALL", all.n, all.alpha,
-                    all.beta, all.omega, all.frame, all.kappa, all.normalised);
-    }
-};
+std::string row_info(const ReferenceLight& r) { return r.category + " row " + std::to_string(r.row); }
 
 template <class T> void check_frame(const apse::SphericalEllipse<T>& e) {
     const T tol = T(16) * apse::epsilon<T>();
@@ -154,41 +50,28 @@ template <class T> void check_frame(const apse::SphericalEllipse<T>& e) {
     CHECK(e.alpha() >= e.beta());
 }
 
-/// Compares one computed ellipse with its reference row; returns false if it was skipped.
+/// Compares one computed ellipse with its reference row (support/projection_reference.hpp: the
+/// errors, the budget) and adds its errors to the table's statistics.
 template <class T>
-void compare(const std::string& name, const apse::SphericalEllipse<T>& got, const Expected& ex, Stats& stats,
-             const std::string& info) {
+void compare(const std::string& name, const apse::SphericalEllipse<T>& got, const apse_test::ReferenceEllipse& ex,
+             apse_test::ProjectionStats& stats, const std::string& info) {
     INFO(info);
     if (ex.empty) {
         CHECK(got.empty());
         CHECK(got.solid_angle() == T(0));
+        stats.add_empty(name);
         return;
     }
     REQUIRE_FALSE(got.empty());
     check_frame(got);
-    const double ea = rel_err(got.alpha(), ex.alpha), eb = rel_err(got.beta(), ex.beta);
-    const double eo = rel_err(got.solid_angle(), ex.omega);
-    const double ez = vec_err(got.z, ex.ze);
-    INFO("alpha " << double(got.alpha()) << " vs " << double(ex.alpha) << " (" << ea << ", kappa " << ex.k_alpha << ")");
-    INFO("beta " << double(got.beta()) << " vs " << double(ex.beta) << " (" << eb << ", kappa " << ex.k_beta << ")");
-    INFO("omega " << double(got.solid_angle()) << " vs " << double(ex.omega) << " (" << eo << ", kappa " << ex.k_omega << ")");
-    INFO("z_e error " << ez << " (kappa " << ex.k_frame << ")");
-    CHECK(ea <= budget<T>(ex.k_alpha));
-    CHECK(eb <= budget<T>(ex.k_beta));
-    CHECK(eo <= budget<T>(ex.k_omega));
-    CHECK(ez <= budget<T>(ex.k_frame));
-    // the major axis (up to sign), when the ellipse is not (nearly) circular
-    const double gap = double((ex.alpha - ex.beta) / ex.alpha);
-    double ex_err = 0;
-    if (gap > 1e-2) {
-        const vec3<double> gx(got.x);
-        ex_err = std::fmin(glm::length(gx - ex.xe), glm::length(gx + ex.xe));
-        CHECK(ex_err <= budget<T>(ex.k_frame) / gap);
-    }
-    const double eps = double(apse::epsilon<T>());
-    const double norm = std::fmax(std::fmax(ea / (ex.k_alpha + 1), eb / (ex.k_beta + 1)),
-                                  std::fmax(eo / (ex.k_omega + 1), ez / (ex.k_frame + 1))) / eps;
-    stats.add(name, ea, eb, eo, std::fmax(ez, ex_err), norm, std::fmax(ex.k_alpha, std::fmax(ex.k_beta, ex.k_omega)));
+    const apse_test::ProjectionErrors e = apse_test::projection_errors(got, ex);
+    INFO("alpha " << double(got.alpha()) << " vs " << double(ex.alpha) << " (" << e.alpha << ", kappa " << ex.k_alpha << ")");
+    INFO("beta " << double(got.beta()) << " vs " << double(ex.beta) << " (" << e.beta << ", kappa " << ex.k_beta << ")");
+    INFO("omega " << double(got.solid_angle()) << " vs " << double(ex.omega) << " (" << e.omega << ", kappa " << ex.k_omega << ")");
+    INFO("z_e error " << e.z << " (kappa " << ex.k_frame << ")");
+    INFO("x_e error " << e.x << " (compared where (alpha - beta)/alpha = " << e.gap << " > 1e-2)");
+    CHECK(apse_test::within_budget<T>(e, ex));
+    stats.add(name, e);
 }
 
 const char* type_name(float) { return "float"; }
@@ -268,14 +151,11 @@ template <class T> vec3<T> random_unit(std::mt19937_64& rng) {
 
 TEMPLATE_TEST_CASE("project_disk against the mpmath table", "[projection][disk]", float, double) {
     using T = TestType;
-    const Table t = load("disks.csv");
-    REQUIRE(t.rows.size() >= 200);
-    Stats stats;
-    for (const auto& f : t.rows) {
-        const Row r{&t, &f};
-        const auto e = apse::project_disk(r.v<T>("o"), r.v<T>("c"), r.v<T>("n"), T(r.num("r")));
-        compare(r.str("case"), e, expected(r), stats, r.str("case") + " row " + std::to_string(&f - &t.rows[0]));
-    }
+    const std::vector<ReferenceLight> rows = load(Light::disk);
+    REQUIRE(rows.size() >= 200);
+    apse_test::ProjectionStats stats;
+    for (const ReferenceLight& r : rows)
+        compare(r.category, apse_test::project<T>(Light::disk, r), r.expected, stats, row_info(r));
     stats.print("disk", type_name(T()));
 }
 
@@ -284,15 +164,14 @@ TEMPLATE_TEST_CASE("project_disk against the mpmath table", "[projection][disk]"
 // normal's direction and length) is of the size of the per-point path's own rounding of 1/|n|.
 TEMPLATE_TEST_CASE("project_disk from a stored DiskFrame against the mpmath table", "[projection][disk]", float, double) {
     using T = TestType;
-    const Table t = load("disks.csv");
-    REQUIRE(t.rows.size() >= 200);
-    Stats stats;
+    const std::vector<ReferenceLight> rows = load(Light::disk);
+    REQUIRE(rows.size() >= 200);
+    apse_test::ProjectionStats stats;
     int compared = 0;
-    for (const auto& f : t.rows) {
-        const Row r{&t, &f};
-        const apse::DiskFrame<T> frame = apse::DiskFrame<T>::make(r.v<T>("c"), r.v<T>("n"), T(r.num("r")));
-        const auto e = apse::project_disk(r.v<T>("o"), frame);
-        compare(r.str("case"), e, expected(r), stats, r.str("case") + " row " + std::to_string(&f - &t.rows[0]));
+    for (const ReferenceLight& r : rows) {
+        const apse::DiskFrame<T> frame = apse::DiskFrame<T>::make(vec3<T>(r.c), vec3<T>(r.axes[0]), T(r.radius));
+        const auto e = apse::project_disk(vec3<T>(r.o), frame);
+        compare(r.category, e, r.expected, stats, row_info(r));
         compared += !e.empty();
     }
     CHECK(compared >= 200);
@@ -308,12 +187,8 @@ TEMPLATE_TEST_CASE("project_disk's closed-form fields agree with from_tangents o
     using T = TestType;
     // Every disk row, and heights 10^-k (k = 0..40: down to subnormal in float, across the switch
     // to from_tangents where lambda² would underflow) above the centre, the rim and beside the disk.
-    const Table t = load("disks.csv");
     std::vector<apse::SphericalEllipse<T>> ellipses;
-    for (const auto& f : t.rows) {
-        const Row r{&t, &f};
-        ellipses.push_back(apse::project_disk(r.v<T>("o"), r.v<T>("c"), r.v<T>("n"), T(r.num("r"))));
-    }
+    for (const ReferenceLight& r : load(Light::disk)) ellipses.push_back(apse_test::project<T>(Light::disk, r));
     for (int k = 0; k <= 40; ++k)
         for (T x : {T(0.3), T(1), T(2)})
             ellipses.push_back(apse::project_disk(vec3<T>(x, T(0.25), T(std::pow(10.0, -k))), vec3<T>(0), vec3<T>(0, 0, 1), T(1)));
@@ -344,44 +219,33 @@ TEMPLATE_TEST_CASE("project_disk's closed-form fields agree with from_tangents o
 
 TEMPLATE_TEST_CASE("project_ellipse against the mpmath table", "[projection][ellipse]", float, double) {
     using T = TestType;
-    const Table t = load("ellipses.csv");
-    REQUIRE(t.rows.size() >= 60);
-    Stats stats;
-    for (const auto& f : t.rows) {
-        const Row r{&t, &f};
-        const auto e = apse::project_ellipse(r.v<T>("o"), r.v<T>("c"), r.v<T>("u"), r.v<T>("v"));
-        compare(r.str("case"), e, expected(r), stats, r.str("case") + " row " + std::to_string(&f - &t.rows[0]));
-    }
+    const std::vector<ReferenceLight> rows = load(Light::ellipse);
+    REQUIRE(rows.size() >= 60);
+    apse_test::ProjectionStats stats;
+    for (const ReferenceLight& r : rows)
+        compare(r.category, apse_test::project<T>(Light::ellipse, r), r.expected, stats, row_info(r));
     stats.print("ellipse", type_name(T()));
 }
 
 TEMPLATE_TEST_CASE("project_sphere against the mpmath table", "[projection][sphere]", float, double) {
     using T = TestType;
-    const Table t = load("spheres.csv");
-    Stats stats;
-    for (const auto& f : t.rows) {
-        const Row r{&t, &f};
-        const auto e = apse::project_sphere(r.v<T>("o"), r.v<T>("c"), T(r.num("radius")));
-        compare(r.str("case"), e, expected(r), stats, r.str("case") + " row " + std::to_string(&f - &t.rows[0]));
-    }
+    apse_test::ProjectionStats stats;
+    for (const ReferenceLight& r : load(Light::sphere))
+        compare(r.category, apse_test::project<T>(Light::sphere, r), r.expected, stats, row_info(r));
     stats.print("sphere", type_name(T()));
 }
 
 TEMPLATE_TEST_CASE("project_ellipsoid against the mpmath table", "[projection][ellipsoid]", float, double) {
     using T = TestType;
-    const Table t = load("ellipsoids.csv");
-    Stats stats;
-    for (const auto& f : t.rows) {
-        const Row r{&t, &f};
-        const auto e = apse::project_ellipsoid(r.v<T>("o"), r.v<T>("c"), r.v<T>("a1"), r.v<T>("a2"), r.v<T>("a3"));
-        compare(r.str("case"), e, expected(r), stats, r.str("case") + " row " + std::to_string(&f - &t.rows[0]));
-    }
+    apse_test::ProjectionStats stats;
+    for (const ReferenceLight& r : load(Light::ellipsoid))
+        compare(r.category, apse_test::project<T>(Light::ellipsoid, r), r.expected, stats, row_info(r));
     stats.print("ellipsoid", type_name(T()));
 }
 
 TEST_CASE("the reference tables cover at least 300 configurations", "[projection]") {
     std::size_t n = 0;
-    for (const char* f : {"disks.csv", "ellipses.csv", "spheres.csv", "ellipsoids.csv"}) n += load(f).rows.size();
+    for (Light light : apse_test::all_lights) n += load(light).size();
     CHECK(n >= 300);
 }
 
@@ -564,18 +428,16 @@ TEMPLATE_TEST_CASE("contains agrees with ray–shape intersection", "[projection
 
 TEMPLATE_TEST_CASE("disk and ellipse with equal orthogonal axes agree", "[projection][disk][ellipse]", float, double) {
     using T = TestType;
-    const Table t = load("disks.csv");
     double worst = 0;
-    for (const auto& f : t.rows) {
-        const Row r{&t, &f};
-        const Expected ex = expected(r);
-        const vec3<T> o = r.v<T>("o"), c = r.v<T>("c"), n = r.v<T>("n");
-        const T rad = T(r.num("r"));
+    for (const ReferenceLight& r : load(Light::disk)) {
+        const apse_test::ReferenceEllipse& ex = r.expected;
+        const vec3<T> o(r.o), c(r.c), n(r.axes[0]);
+        const T rad = T(r.radius);
         const auto d = apse::project_disk(o, c, n, rad);
         const vec3<T> nn = glm::normalize(vec3<T>(glm::normalize(vec3<double>(n))));
         const vec3<T> e1 = apse::detail::any_perpendicular(nn), e2 = glm::cross(nn, e1);
         const auto e = apse::project_ellipse(o, c, rad * e1, rad * e2);
-        INFO(r.str("case"));
+        INFO(row_info(r));
         CHECK(d.empty() == e.empty());
         if (d.empty() || e.empty()) continue;
         const double ea = rel_err(e.alpha(), d.alpha()), eb = rel_err(e.beta(), d.beta());

@@ -5,13 +5,11 @@
 #include <apse/math.hpp>
 
 #include "support/catch.hpp"
+#include "support/projection_reference.hpp"
 
 #include <cmath>
 #include <cstdio>
-#include <cstdlib>
-#include <fstream>
 #include <limits>
-#include <sstream>
 #include <string>
 #include <vector>
 
@@ -24,33 +22,6 @@ template <class T> apse::SphericalEllipse<T> canonical(T ta, T tb) {
 }
 
 double rel_err(double x, double ref) { return ref == 0 ? std::fabs(x) : std::fabs(x - ref) / std::fabs(ref); }
-
-struct SolidAngleRow {
-    std::string name;
-    double ta, tb;
-    long double omega;
-};
-
-std::vector<SolidAngleRow> load_solid_angles() {
-    std::ifstream in(std::string(APSE_TEST_DATA_DIR) + "/projection/solid_angle.csv");
-    REQUIRE(in.good());
-    std::vector<SolidAngleRow> rows;
-    std::string line;
-    bool header = true;
-    while (std::getline(in, line)) {
-        if (line.empty() || line[0] == '#') continue;
-        if (header) {
-            header = false;
-            continue;
-        }
-        std::stringstream ss(line);
-        std::string f[4];
-        for (auto& s : f) std::getline(ss, s, ',');
-        rows.push_back({f[0], std::strtod(f[1].c_str(), nullptr), std::strtod(f[2].c_str(), nullptr),
-                        std::strtold(f[3].c_str(), nullptr)});
-    }
-    return rows;
-}
 
 template <class T> void check_invariants(const apse::SphericalEllipse<T>& e) {
     const T tol = T(16) * apse::epsilon<T>();
@@ -175,17 +146,21 @@ TEMPLATE_TEST_CASE("from_arcs", "[spherical_ellipse]", float, double) {
 
 TEMPLATE_TEST_CASE("solid angle against the mpmath table", "[spherical_ellipse][solid_angle]", float, double) {
     using T = TestType;
-    const auto rows = load_solid_angles();
+    // the measure and the budget: support/projection_reference.hpp (shared with projection_report)
+    const apse_test::SolidAngleReferences table =
+        apse_test::read_solid_angle_references(std::string(APSE_TEST_DATA_DIR) + "/projection");
+    INFO(table.error);
+    REQUIRE(table.error.empty());
+    const auto& rows = table.rows;
     REQUIRE(rows.size() >= 100);
     double worst = 0, worst_small = 0;
     int n = 0;
     for (const auto& r : rows) {
-        if (T(r.tb) < apse::detail::tan_min<T>()) continue;  // empty by definition in float
-        const auto e = canonical(T(r.ta), T(r.tb));
-        REQUIRE_FALSE(e.empty());
-        const double err = rel_err(double(e.solid_angle()), double(r.omega));
-        INFO(r.name << " tan_alpha=" << r.ta << " tan_beta=" << r.tb << " omega=" << double(r.omega));
-        CHECK(err <= 8 * double(apse::epsilon<T>()));
+        if (!apse_test::solid_angle_applies<T>(r)) continue;  // empty by definition in float
+        REQUIRE_FALSE(apse_test::solid_angle_ellipse<T>(r).empty());
+        const double err = apse_test::solid_angle_error<T>(r);
+        INFO(r.category << " tan_alpha=" << r.tan_alpha << " tan_beta=" << r.tan_beta << " omega=" << double(r.omega));
+        CHECK(err <= apse_test::solid_angle_budget<T>());
         worst = std::fmax(worst, err);
         if (r.omega < 1e-10L) worst_small = std::fmax(worst_small, err);
         ++n;

@@ -154,16 +154,12 @@ int table_sizes(const std::string& page) {
 }  // namespace
 
 int main(int argc, char** argv) {
-    std::string page;
-    int arg = 1;
-    if (argc > 2 && std::string(argv[1]) == "--into") {
-        page = argv[2];
-        arg = 3;
-    }
-    if (argc > arg && std::string(argv[arg]) == "table_sizes") return table_sizes(page);
-    const std::string dir = argc > arg ? argv[arg] : std::string(APSE_TEST_DATA_DIR) + "/elliptic";
+    const apse_tools::ToolArguments args = apse_tools::tool_arguments(argc, argv);
+    const std::string& page = args.page;
+    if (!args.rest.empty() && args.rest[0] == "table_sizes") return table_sizes(page);
+    const std::string dir = !args.rest.empty() ? args.rest[0] : std::string(APSE_TEST_DATA_DIR) + "/elliptic";
     // the data directory as the page names it: relative to the source tree where it is the default
-    const std::string shown = argc > arg ? dir : std::string("tests/data/elliptic");
+    const std::string shown = !args.rest.empty() ? dir : std::string("tests/data/elliptic");
     apse_tools::DocReport report("accuracy_report");
     report.section("elliptic");
     const Function functions[] = {

@@ -34,15 +34,27 @@ states the CPU and compiler recorded in the JSON context. Only the standard libr
 * bench_mis_query (names <query>/<hit|bsdf><float|double>): the cost of the stateless MIS
   query per map, for directions that hit the disk (docs/tabulated.md).
 
+* bench_projection (names <function><float|double>): the per-shading-point set-up of
+  docs/projection.md — lean area sampling, project_disk, solid_angle, both, their ratio to area
+  sampling, and the other shapes' projections. Its console output is its own, so the JSON is
+  written with --benchmark_out:
+
+    bench_projection --benchmark_repetitions=11 --benchmark_min_time=0.1 \\
+                     --benchmark_enable_random_interleaving=true --benchmark_report_aggregates_only=true \\
+                     --benchmark_out=projection.json --benchmark_out_format=json
+    python3 tools/bench_table.py --into docs/projection.md projection.json
+
 With --into PAGE the tables are written into the markdown page instead of printed: each section
 (disks: the disk table and its spread; breakdown: the cost breakdown; spheres: the sphere-light
-table; elliptic: the elliptic-integral table; mis_query: the MIS-query table) replaces what stands between the page's lines
+table; elliptic: the elliptic-integral table; mis_query: the MIS-query table; projection: the
+projection speed table) replaces what stands between the page's lines
 `<!-- bench_table.py: NAME -->` and `<!-- /bench_table.py: NAME -->`, so that a measured table
 lives in one place and is never copied by hand:
 
     python3 tools/bench_table.py --into docs/speed.md samplers.json
     python3 tools/bench_table.py --into docs/elliptic.md elliptic.json
     python3 tools/bench_table.py --into docs/tabulated.md mis_query.json
+    python3 tools/bench_table.py --into docs/projection.md projection.json
 """
 
 import contextlib
@@ -416,6 +428,56 @@ def mis_query_table(data):
           "map's (float, double)." % ' and '.join(ratios))
 
 
+PROJECTION_NAME = re.compile(r'^(area_sample|project_disk|solid_angle|project_disk\+solid_angle|'
+                             r'project_(?:ellipse|sphere|ellipsoid)\+solid_angle)<(float|double)>$')
+PROJECTION_ROWS = [
+    ('area_sample', 'lean area sampling (sampler from the stored frame, one concentric sample + solid-angle pdf)'),
+    ('project_disk', '`project_disk` (stored frame)'),
+    ('solid_angle', "`solid_angle` (Bulirsch's transformation from the stored cosines)"),
+    ('project_disk+solid_angle', '`project_disk` + `solid_angle`'),
+    (None, 'ratio to lean area sampling (CPU time)'),
+    ('project_ellipse+solid_angle', '`project_ellipse` + `solid_angle`'),
+    ('project_sphere+solid_angle', '`project_sphere` + `solid_angle`'),
+    ('project_ellipsoid+solid_angle', '`project_ellipsoid` + `solid_angle`'),
+]
+PROJECTION_GOAL = 2.0  # (project_disk + solid_angle) / lean area sampling, in double
+
+
+def projection_table(data):
+    """bench_projection: median ns per shading point of each set-up step, and the ratio
+    (project_disk + solid_angle) / lean area sampling."""
+    runs, have_median = selected_runs(data)
+    times = {}
+    for b in runs:
+        m = PROJECTION_NAME.match(b.get('run_name', b['name']))
+        if m:
+            times[(m.group(1), m.group(2))] = ns(b)
+    reps = max([b.get('repetitions', 1) for b in runs] or [1])
+    print(header(data.get('context', {}), have_median, reps))
+    print()
+    print('| | float | double |')
+    print('|---|---:|---:|')
+    ratios = {}
+    for ty in ('float', 'double'):
+        area, both = times.get(('area_sample', ty)), times.get(('project_disk+solid_angle', ty))
+        if area and both:
+            ratios[ty] = both / area
+    for key, title in PROJECTION_ROWS:
+        if key is None:
+            cells = ['**%.2f**' % ratios[ty] if ty in ratios else '—' for ty in ('float', 'double')]
+        else:
+            cells = [('%.1f ns' if times[(key, ty)] < 100 else '%.0f ns') % times[(key, ty)]
+                     if (key, ty) in times else '—' for ty in ('float', 'double')]
+        print('| %s | %s |' % (title, ' | '.join(cells)))
+    print()
+    goal = ''
+    if 'double' in ratios:
+        goal = (' The goal, ≤ %g in double, is %s in this run.' %
+                (PROJECTION_GOAL, 'met' if ratios['double'] <= PROJECTION_GOAL else '**not met**'))
+    print('ns per shading point. Ratio = (`project_disk` + `solid_angle`) / lean area sampling, both '
+          'from the same run.' + goal)
+
+
 def tables(datas):
     data = datas[0]
     names = [b.get('run_name', b['name']) for b in data.get('benchmarks', [])]
@@ -425,6 +487,10 @@ def tables(datas):
     if any(MIS_NAME.match(n) for n in names):
         with section('mis_query'):
             mis_query_table(data)
+        return
+    if any(PROJECTION_NAME.match(n) for n in names):
+        with section('projection'):
+            projection_table(data)
         return
     with section('elliptic'):
         elliptic_table(data)

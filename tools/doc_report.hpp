@@ -22,6 +22,23 @@
 
 namespace apse_tools {
 
+/// A measuring tool's command line: a leading `--into PAGE` (`page` empty without one) and the
+/// arguments after it.
+struct ToolArguments {
+    std::string page;
+    std::vector<std::string> rest;
+};
+inline ToolArguments tool_arguments(int argc, char** argv) {
+    ToolArguments a;
+    int i = 1;
+    if (argc > 2 && std::string(argv[1]) == "--into") {
+        a.page = argv[2];
+        i = 3;
+    }
+    for (; i < argc; ++i) a.rest.emplace_back(argv[i]);
+    return a;
+}
+
 class DocReport {
 public:
     explicit DocReport(std::string tool) : tool_(std::move(tool)) {}

@@ -277,7 +277,7 @@ __global__ void sphere_kernel(const T* in, T* out, float* table_rows, int n) {
     const glm::vec<2, T> u(in[i], T(0.6));
     const V rn(T(1), T(0), T(0.2));  // the receiver normal: the cap straddles its horizon
     T s = T(0);
-    switch (i % 10) {
+    switch (i % 12) {
     case 0: s += sphere_calls<apse::RadialMap<T>>(u); break;
     case 1: s += sphere_calls<apse::LdRadialMap<T>>(u); break;
     case 2: s += sphere_calls<apse::ParallelMap<T>>(u); break;
@@ -287,7 +287,10 @@ __global__ void sphere_kernel(const T* in, T* out, float* table_rows, int n) {
     case 6: s += sphere_calls<apse::CosineWeighted<apse::LdRadialMap<T>>>(u, rn); break;
     case 7: s += sphere_calls<apse::CosineWeighted<apse::ParallelMap<T>>>(u, rn); break;
     case 8: s += sphere_calls<apse::CosineWeighted<apse::TabulatedMap<T>>>(u, view, rn); break;
-    default: s += sphere_calls<apse::CosineWeighted<apse::TabulatedLdRadialMap<T>>>(u, view, rn); break;
+    case 9: s += sphere_calls<apse::CosineWeighted<apse::TabulatedLdRadialMap<T>>>(u, view, rn); break;
+    // the map chosen at run time (the choice among the cap samplers), plain and cosine-weighted
+    case 10: s += sphere_calls<apse::RuntimeSampler<T>>(u, apse::MapKind(i % 5), view); break;
+    default: s += sphere_calls<apse::RuntimeSampler<T>>(u, apse::MapKind(i % 5), view, rn); break;
     }
     // the projected-cap sampler on its own
     const apse::detail::ProjectedCapSampler<T> cap(apse::project_sphere(V(0), V(T(0.5), u.x, T(3)), T(1)), rn);

@@ -1,12 +1,13 @@
 // Test utilities for the area-preserving maps (and any sampler with sample(u) -> {direction, pdf}):
 // the disk-cell quadrature behind the chi-square test, the chi-square test itself (pooling +
-// Šidák correction, from statistics.hpp), and the jittered-grid stratification estimator.
+// Šidák correction, from statistics_core.hpp), and through it the jittered-grid stratification
+// estimator (estimator_variance, statistics_core.hpp).
 // Reusable by the tabulated-map and Gamito tests. Independent of apse's own formulas: cell
 // probabilities come from quadrature of the disk's solid-angle integrand, never from the code
 // under test.
 #pragma once
 
-#include "statistics.hpp"
+#include "statistics_core.hpp"
 
 #include <cmath>
 #include <cstdint>
@@ -98,38 +99,6 @@ Chi2Result disk_chi2(const DiskCells& cells, Sample&& sample, int n_samples, std
     Chi2Result res = chi2_test(observed, expected);
     if (outside > 0) res.p = 0;  // a sample off the disk is a failure
     return res;
-}
-
-/// Variance of the estimator (1/N) sum f(w_i)/pdf over `reps` repetitions with N = k x k points
-/// per repetition, drawn either jittered (one uniform point per cell of the k x k grid) or
-/// independent uniform. `sample(u1, u2)` returns {direction, pdf}.
-template <class T, class Sample, class F>
-double estimator_variance(Sample&& sample, F&& f, int k, int reps, bool jittered, std::uint64_t seed) {
-    Rng rng(seed);
-    double sum = 0, sum2 = 0;
-    for (int rep = 0; rep < reps; ++rep) {
-        double est = 0;
-        for (int i = 0; i < k; ++i)
-            for (int j = 0; j < k; ++j) {
-                T u1, u2;
-                if (jittered) {
-                    u1 = T((i + rng.uniform<double>()) / k);
-                    u2 = T((j + rng.uniform<double>()) / k);
-                    if (!(u1 < T(1))) u1 = T(1) - std::numeric_limits<T>::epsilon();
-                    if (!(u2 < T(1))) u2 = T(1) - std::numeric_limits<T>::epsilon();
-                } else {
-                    u1 = rng.uniform<T>();
-                    u2 = rng.uniform<T>();
-                }
-                const auto s = sample(u1, u2);
-                if (s.pdf > 0) est += double(f(s.direction)) / double(s.pdf);
-            }
-        est /= double(k) * k;
-        sum += est;
-        sum2 += est * est;
-    }
-    const double mean = sum / reps;
-    return sum2 / reps - mean * mean;
 }
 
 }  // namespace apse_test
