@@ -10,6 +10,10 @@
 // solid_angle() against references independent of apse (mpmath table, closed form),
 // sample_with_diagnostics and the maps' sample_counted identical to sample, and point_on_plane's
 // points on the light.
+//
+// The samplers, the light, the grid of points, the budgets and the measure are those of
+// tests/support/concept_measures.hpp (tools/concept_report prints what the measure finds:
+// docs/reliability.md).
 
 #include "support/catch.hpp"
 
@@ -28,28 +32,16 @@
 #include <type_traits>
 #include <utility>
 
-#include "support/default_table.hpp"
+#include "support/concept_measures.hpp"
 
 namespace {
 
-template <class T> using V3 = glm::vec<3, T>;
-template <class T> using V2 = glm::vec<2, T>;
+using namespace apse_test::sampler_concept;
 
 // --- the scenes ---------------------------------------------------------------------------------
 
-/// A disk light seen from o, and a receiver normal at o (for CosineWeighted).
-template <class T> struct Scene {
-    V3<T> o, c, n;
-    T r;
-    V3<T> receiver;
-};
-
-/// The disk {z = −1, |p − (0.5, 0, −1)| <= 1} seen from the origin: an oblique, close light.
-/// Its solid angle, 1.63710354934542635408343292152 sr, is the mpmath reference of
-/// tests/data/projection/disks.csv (row 2, tools/gen_projection_reference.py).
-template <class T> Scene<T> normal_scene() {
-    return {V3<T>(0), V3<T>(T(0.5), T(0), T(-1)), V3<T>(0, 0, 1), T(1), V3<T>(T(0.2), T(0.1), T(-1))};
-}
+/// The solid angle of normal_scene's disk, 1.63710354934542635408343292152 sr: the mpmath
+/// reference of tests/data/projection/disks.csv (row 2, tools/gen_projection_reference.py).
 const double kDiskOmega = 1.63710354934542635408343292152;
 
 /// The disk's circumscribed square [−0.5, 1.5] × [−1, 1] at z = −1 (what SphericalRectangle
@@ -75,166 +67,6 @@ template <class T> Scene<T> degenerate_scene(Degenerate d) {
     if (d == Degenerate::behind) s.receiver = V3<T>(T(0.1), T(0), T(1));  // faces away from the light
     return s;
 }
-
-// --- the samplers: one factory each, with docs/usage.md's table as constants -----------------------
-
-template <class T> apse::SphericalEllipse<T> ellipse_of(const Scene<T>& s) { return apse::project_disk(s.o, s.c, s.n, s.r); }
-
-enum class Shape { disk, square };
-
-/// The maps' building blocks a sampler has as public members (docs/math.md §4–§6): the local
-/// coordinates of a direction (RadialMap, TabulatedMap), the cumulative areas (RadialMap's
-/// quadrant_area, ParallelMap's half_area). A bit mask; none for every other sampler.
-enum Blocks : int { no_blocks = 0, local_coords = 1, quadrant = 2, half = 4 };
-
-struct Radial {
-    static constexpr const char* name = "RadialMap";
-    static constexpr bool invertible = true, has_solid_angle = true, counts = true;
-    static constexpr Shape shape = Shape::disk;
-    static constexpr int blocks = local_coords | quadrant;
-    template <class T> static auto make(const Scene<T>& s) { return apse::RadialMap<T>(ellipse_of(s)); }
-};
-struct LdRadial {
-    static constexpr const char* name = "LdRadialMap";
-    static constexpr bool invertible = true, has_solid_angle = true, counts = true;
-    static constexpr Shape shape = Shape::disk;
-    static constexpr int blocks = no_blocks;
-    template <class T> static auto make(const Scene<T>& s) { return apse::LdRadialMap<T>(ellipse_of(s)); }
-};
-struct Parallel {
-    static constexpr const char* name = "ParallelMap";
-    static constexpr bool invertible = true, has_solid_angle = true, counts = true;
-    static constexpr Shape shape = Shape::disk;
-    static constexpr int blocks = half;
-    template <class T> static auto make(const Scene<T>& s) { return apse::ParallelMap<T>(ellipse_of(s)); }
-};
-struct Tabulated {  // no solid_angle(): the tabulated maps never compute Omega (docs/usage.md)
-    static constexpr const char* name = "TabulatedMap";
-    static constexpr bool invertible = true, has_solid_angle = false, counts = true;
-    static constexpr Shape shape = Shape::disk;
-    static constexpr int blocks = local_coords;
-    template <class T> static auto make(const Scene<T>& s) {
-        return apse::TabulatedMap<T>(ellipse_of(s), apse_test::default_table().view());
-    }
-};
-struct TabulatedLdRadial {
-    static constexpr const char* name = "TabulatedLdRadialMap";
-    static constexpr bool invertible = true, has_solid_angle = false, counts = true;
-    static constexpr Shape shape = Shape::disk;
-    static constexpr int blocks = no_blocks;
-    template <class T> static auto make(const Scene<T>& s) {
-        return apse::TabulatedLdRadialMap<T>(ellipse_of(s), apse_test::default_table().view());
-    }
-};
-template <class Plain> struct Cosine {  // CosineWeighted over a map, with the scene's receiver normal
-    static constexpr const char* name = "CosineWeighted";
-    static constexpr bool invertible = true, has_solid_angle = false, counts = false;
-    static constexpr Shape shape = Shape::disk;
-    static constexpr int blocks = no_blocks;
-    template <class T> static auto make(const Scene<T>& s) {
-        using Map = decltype(Plain::make(s));
-        return apse::CosineWeighted<Map>(Plain::make(s), s.receiver);
-    }
-};
-struct Area {  // from the light's stored frame
-    static constexpr const char* name = "DiskAreaSampler(o, frame)";
-    static constexpr bool invertible = true, has_solid_angle = false, counts = false;
-    static constexpr Shape shape = Shape::disk;
-    static constexpr int blocks = no_blocks;
-    template <class T> static auto make(const Scene<T>& s) {
-        return apse::DiskAreaSampler<T>(s.o, apse::DiskFrame<T>::make(s.c, s.n, s.r));
-    }
-};
-struct AreaDirect {  // the convenience constructor
-    static constexpr const char* name = "DiskAreaSampler(o, c, n, r)";
-    static constexpr bool invertible = true, has_solid_angle = false, counts = false;
-    static constexpr Shape shape = Shape::disk;
-    static constexpr int blocks = no_blocks;
-    template <class T> static auto make(const Scene<T>& s) { return apse::DiskAreaSampler<T>(s.o, s.c, s.n, s.r); }
-};
-struct GamitoSingle {  // no invert(): rejection is not a bijection; no solid_angle(): never computed
-    static constexpr const char* name = "GamitoSingleShot";
-    static constexpr bool invertible = false, has_solid_angle = false, counts = false;
-    static constexpr Shape shape = Shape::disk;
-    static constexpr int blocks = no_blocks;
-    template <class T> static auto make(const Scene<T>& s) { return apse::GamitoSingleShot<T>(s.o, s.c, s.n, s.r); }
-};
-struct GamitoRetry {
-    static constexpr const char* name = "GamitoRetry";
-    static constexpr bool invertible = false, has_solid_angle = true, counts = false;
-    static constexpr Shape shape = Shape::disk;
-    static constexpr int blocks = no_blocks;
-    template <class T> static auto make(const Scene<T>& s) { return apse::GamitoRetry<T>(s.o, s.c, s.n, s.r, 8); }
-};
-struct Rectangle {  // the disk's circumscribed square
-    static constexpr const char* name = "SphericalRectangle";
-    static constexpr bool invertible = true, has_solid_angle = true, counts = false;
-    static constexpr Shape shape = Shape::square;
-    static constexpr int blocks = no_blocks;
-    template <class T> static auto make(const Scene<T>& s) {
-        return apse::SphericalRectangle<T>::from_center(s.o, s.c, V3<T>(s.r, 0, 0), V3<T>(0, s.r, 0));
-    }
-};
-
-/// The printed names of MapKind's maps (in its order) and of the map types.
-constexpr const char* kind_names[5] = {"radial", "ld_radial", "parallel", "tabulated", "tabulated_ld"};
-template <template <class> class Map> constexpr const char* map_name = "?";
-template <> constexpr const char* map_name<apse::RadialMap> = "RadialMap";
-template <> constexpr const char* map_name<apse::LdRadialMap> = "LdRadialMap";
-template <> constexpr const char* map_name<apse::ParallelMap> = "ParallelMap";
-template <> constexpr const char* map_name<apse::TabulatedMap> = "TabulatedMap";
-template <> constexpr const char* map_name<apse::TabulatedLdRadialMap> = "TabulatedLdRadialMap";
-
-/// The map chosen at run time (runtime_sampler.hpp), plain or with the scene's receiver normal;
-/// the tabulated kinds read the default table.
-template <apse::MapKind K, bool Cosine> struct Runtime {
-    static inline const std::string name =
-        std::string("RuntimeSampler ") + kind_names[int(K)] + (Cosine ? ", cosine" : "");
-    static constexpr bool invertible = true, has_solid_angle = false, counts = false;
-    static constexpr Shape shape = Shape::disk;
-    static constexpr int blocks = no_blocks;
-    template <class T> static auto make(const Scene<T>& s) {
-        if constexpr (Cosine) return apse::RuntimeSampler<T>(ellipse_of(s), K, apse_test::default_table().view(), s.receiver);
-        else return apse::RuntimeSampler<T>(ellipse_of(s), K, apse_test::default_table().view());
-    }
-};
-
-/// DiskLight<RuntimeSampler>: the map chosen at run time, plain or with the receiver's normal
-/// (the tabulated kinds read the default table).
-template <apse::MapKind K, bool Cosine> struct Light {
-    static inline const std::string name =
-        std::string("DiskLight<Runtime> ") + kind_names[int(K)] + (Cosine ? ", cosine" : "");
-    static constexpr bool invertible = true, has_solid_angle = true, counts = false;
-    static constexpr Shape shape = Shape::disk;
-    static constexpr int blocks = no_blocks;
-    template <class T> static auto make(const Scene<T>& s) {
-        using L = apse::DiskLight<apse::RuntimeSampler<T>>;
-        if constexpr (Cosine) return L(s.o, s.c, s.n, s.r, K, apse_test::default_table().view(), s.receiver);
-        else return L(s.o, s.c, s.n, s.r, K, apse_test::default_table().view());
-    }
-};
-
-/// DiskLight over the map Map chosen at compile time (the tabulated maps read the default table),
-/// plain or CosineWeighted<Map> with the receiver's normal; from (c, n, r) or from the stored
-/// DiskFrame.
-template <template <class> class Map, bool Cosine, bool Framed = false> struct TypedLight {
-    static inline const std::string name = std::string("DiskLight<") + (Cosine ? "Cosine<" : "") + map_name<Map> +
-                                           (Cosine ? ">>" : ">") + (Framed ? "(frame)" : "");
-    static constexpr bool invertible = true, has_solid_angle = true, counts = false;
-    static constexpr Shape shape = Shape::disk;
-    static constexpr int blocks = no_blocks;
-    template <class T, class... Args> static auto light(const Scene<T>& s, const Args&... args) {
-        using S = std::conditional_t<Cosine, apse::CosineWeighted<Map<T>>, Map<T>>;
-        if constexpr (Framed) return apse::DiskLight<S>(s.o, apse::DiskFrame<T>::make(s.c, s.n, s.r), args...);
-        else return apse::DiskLight<S>(s.o, s.c, s.n, s.r, args...);
-    }
-    template <class T> static auto make(const Scene<T>& s) {
-        return apse::detail::with_table_if_read<Map<T>>(apse_test::default_table().view(), [&](const auto&... table) {
-            if constexpr (Cosine) return light(s, table..., s.receiver);
-            else return light(s, table...);
-        });
-    }
-};
 
 // --- compile-time checks --------------------------------------------------------------------------
 
@@ -334,12 +166,6 @@ static_assert(result_family_checks<float>() && result_family_checks<double>(), "
 
 // --- run-time checks ------------------------------------------------------------------------------
 
-/// Interior points of the square (away from the edges, the radial seam u1 ∈ {0, 1} and the
-/// LD maps' centre, where invert is ambiguous): a 7 × 7 grid in [0.08, 0.92]².
-template <class T> V2<T> grid_point(int i, int j) {
-    return V2<T>(T(0.08 + 0.84 * (i + 0.31) / 7.0), T(0.08 + 0.84 * (j + 0.67) / 7.0));
-}
-
 /// True if the ray o + t·direction meets the scene's light (disk or circumscribed square), up to
 /// a relative slack `tol` of its size; checked through point_on_plane.
 template <class T> bool on_light(const Scene<T>& s, Shape shape, const apse::DirectionSample<T>& d, double tol) {
@@ -354,19 +180,6 @@ template <class T> bool on_light(const Scene<T>& s, Shape shape, const apse::Dir
     return shape == Shape::disk ? q.x * q.x + q.y * q.y <= r * r : std::fabs(q.x) <= r && std::fabs(q.y) <= r;
 }
 
-/// Budgets shared by every sampler on this moderate light: pdf(sample) vs the reported pdf and
-/// the round trip invert(sample(u)) − u measured at most 4e-7 (float) and 7e-16 (double) over all
-/// of them (the printout); the budgets, 1e-5 and 1e-13, leave ~25× and ~150× for other
-/// compilers' FMA contraction and vector paths. A sample on the light within 1e-4 float / 1e-10
-/// double of its size (a unit direction's rounding carried to a plane ~1 away, with slack for the
-/// rim). A wrong pdf, a wrong inverse or a direction off the light errs by far more (a pdf 0.2 %
-/// off fails).
-template <class T> struct Budget {
-    static constexpr double pdf = sizeof(T) == 4 ? 1e-5 : 1e-13;
-    static constexpr double round_trip = sizeof(T) == 4 ? 1e-5 : 1e-13;
-    static constexpr double on_light = sizeof(T) == 4 ? 1e-4 : 1e-10;
-};
-
 template <class F, class T> void check_normal() {
     static_assert(static_checks<F, T>(), "");
     const Scene<T> scene = normal_scene<T>();
@@ -379,51 +192,40 @@ template <class F, class T> void check_normal() {
         const double ref = F::shape == Shape::disk ? kDiskOmega : square_omega();
         CHECK(std::fabs(double(s.solid_angle()) / ref - 1) <= 64 * double(apse::epsilon<T>()));
     }
-    int accepted = 0;
-    double worst_pdf = 0, worst_u = 0;
-    for (int i = 0; i < 7; ++i)
-        for (int j = 0; j < 7; ++j) {
-            const V2<T> u = grid_point<T>(i, j);
-            const auto smp = s.sample(u);
-            apse::SampleDiagnostics diag{-1};
-            const auto same = apse::sample_with_diagnostics(s, u, diag);
-            // the same computation, bit for bit, and a count only where the sampler counts
-            CHECK(same.pdf == smp.pdf);
-            CHECK(same.direction == smp.direction);
-            CHECK(diag.iterations >= 0);
-            CHECK(diag.iterations <= (F::counts ? apse::detail::max_area_iterations : 0));
-            if constexpr (F::counts) {
-                // the public counting member: the same sample and count as sample_with_diagnostics
-                int iterations = -1;
-                const auto counted = s.sample_counted(u, iterations);
-                CHECK(counted.pdf == smp.pdf);
-                CHECK(counted.direction == smp.direction);
-                CHECK(iterations == diag.iterations);
-            }
-            CHECK(apse::detail::is_finite(smp.pdf));
-            CHECK(std::fabs(double(glm::length(smp.direction)) - 1) <= Budget<T>::on_light);
-            if constexpr (std::is_base_of<apse::PointSample<T>, decltype(smp)>::value) {
-                // the point on the light: where point_on_plane puts it, at its distance along the direction
-                const apse::PointSample<T> p = apse::point_on_plane(apse::DirectionSample<T>(smp), scene.o, scene.c, scene.n);
-                CHECK(glm::length(glm::dvec3(smp.point) - glm::dvec3(p.point)) <= Budget<T>::on_light);
-                CHECK(std::fabs(double(smp.distance) - double(p.distance)) <= Budget<T>::on_light);
-            }
-            if (!(smp.pdf > T(0))) continue;  // rejected (Gamito single shot): no sample
-            ++accepted;
-            CHECK(on_light(scene, F::shape, smp, Budget<T>::on_light));
-            worst_pdf = std::max(worst_pdf, std::fabs(double(s.pdf(smp.direction)) / double(smp.pdf) - 1));
-            if constexpr (F::invertible) {
-                const V2<T> back = s.invert(smp.direction);
-                worst_u = std::max(worst_u, double(std::max(std::fabs(back.x - u.x), std::fabs(back.y - u.y))));
-            }
+    const Measure m = measure<F, T>(s, [&](const V2<T>& u, const auto& smp) {
+        using R = std::decay_t<decltype(smp)>;
+        apse::SampleDiagnostics diag{-1};
+        const auto same = apse::sample_with_diagnostics(s, u, diag);
+        // the same computation, bit for bit, and a count only where the sampler counts
+        CHECK(same.pdf == smp.pdf);
+        CHECK(same.direction == smp.direction);
+        CHECK(diag.iterations >= 0);
+        CHECK(diag.iterations <= (F::counts ? apse::detail::max_area_iterations : 0));
+        if constexpr (F::counts) {
+            // the public counting member: the same sample and count as sample_with_diagnostics
+            int iterations = -1;
+            const auto counted = s.sample_counted(u, iterations);
+            CHECK(counted.pdf == smp.pdf);
+            CHECK(counted.direction == smp.direction);
+            CHECK(iterations == diag.iterations);
         }
-    // every sampler but Gamito's single shot accepts every point; it accepts ~75 % (pi/4 of the
-    // far-field square): at least half of the 49 points
-    CHECK(accepted >= (std::string(F::name) == "GamitoSingleShot" ? 25 : 49));
-    CHECK(worst_pdf <= Budget<T>::pdf);
-    CHECK(worst_u <= Budget<T>::round_trip);
-    std::printf("[%s] %-42s accepted %2d/49, max |pdf(sample)/pdf - 1| %.1e, max |invert(sample(u)) - u| %.1e\n",
-                sizeof(T) == 4 ? "float" : "double", std::string(F::name).c_str(), accepted, worst_pdf, worst_u);
+        CHECK(apse::detail::is_finite(smp.pdf));
+        CHECK(std::fabs(double(glm::length(smp.direction)) - 1) <= Budget<T>::on_light);
+        if constexpr (std::is_base_of<apse::PointSample<T>, R>::value) {
+            // the point on the light: where point_on_plane puts it, at its distance along the direction
+            const apse::PointSample<T> p = apse::point_on_plane(apse::DirectionSample<T>(smp), scene.o, scene.c, scene.n);
+            CHECK(glm::length(glm::dvec3(smp.point) - glm::dvec3(p.point)) <= Budget<T>::on_light);
+            CHECK(std::fabs(double(smp.distance) - double(p.distance)) <= Budget<T>::on_light);
+        }
+        // a sample (pdf > 0; Gamito's single shot may reject) lies on the light
+        if (smp.pdf > T(0)) CHECK(on_light(scene, F::shape, smp, Budget<T>::on_light));
+    });
+    CHECK(m.accepted >= required_accepted<F>());
+    CHECK(m.pdf <= Budget<T>::pdf);
+    CHECK(m.round_trip <= Budget<T>::round_trip);
+    std::printf("[%s] %-42s accepted %2d/%d, max |pdf(sample)/pdf - 1| %.1e, max |invert(sample(u)) - u| %.1e\n",
+                sizeof(T) == 4 ? "float" : "double", std::string(F::name).c_str(), m.accepted, kPoints, m.pdf,
+                m.round_trip);
     // away from the light: density 0
     CHECK(s.pdf(V3<T>(0, 0, 1)) == T(0));
     CHECK(s.pdf(V3<T>(T(-1), T(0), T(-0.1))) == T(0));
@@ -437,8 +239,8 @@ template <class F, class T> void check_degenerate(Degenerate d) {
     // Omega is the light's: 0 for a degenerate light, not for one merely below the receiver's horizon
     if constexpr (F::has_solid_angle)
         if (d != Degenerate::behind) CHECK(s.solid_angle() == T(0));
-    for (int i = 0; i < 7; ++i)
-        for (int j = 0; j < 7; ++j) {
+    for (int i = 0; i < kGrid; ++i)
+        for (int j = 0; j < kGrid; ++j) {
             const auto smp = s.sample(grid_point<T>(i, j));
             CHECK(smp.pdf == T(0));
             CHECK(apse::detail::is_finite(smp.direction.x + smp.direction.y + smp.direction.z));
@@ -465,34 +267,17 @@ template <class Plain, class T> void check_map_and_cosine() {
 }  // namespace
 
 TEMPLATE_TEST_CASE("sampler concept: the maps and their cosine-weighted versions", "[concept]", float, double) {
-    check_map_and_cosine<Radial, TestType>();
-    check_map_and_cosine<LdRadial, TestType>();
-    check_map_and_cosine<Parallel, TestType>();
-    check_map_and_cosine<Tabulated, TestType>();
-    check_map_and_cosine<TabulatedLdRadial, TestType>();
+    for_each_map([](auto f) { check_map_and_cosine<typename decltype(f)::type, TestType>(); });
 }
 
 TEMPLATE_TEST_CASE("sampler concept: the baselines", "[concept]", float, double) {
-    check_sampler<Area, TestType>();
-    check_sampler<AreaDirect, TestType>();
-    check_sampler<GamitoSingle, TestType>();
-    check_sampler<GamitoRetry, TestType>();
-    check_sampler<Rectangle, TestType>();
+    for_each_baseline([](auto f) { check_sampler<typename decltype(f)::type, TestType>(); });
 }
 
 TEMPLATE_TEST_CASE("sampler concept: RuntimeSampler, each map, plain and cosine-weighted", "[concept]", float, double) {
     using T = TestType;
     using K = apse::MapKind;
-    check_sampler<Runtime<K::radial, false>, T>();
-    check_sampler<Runtime<K::ld_radial, false>, T>();
-    check_sampler<Runtime<K::parallel, false>, T>();
-    check_sampler<Runtime<K::tabulated, false>, T>();
-    check_sampler<Runtime<K::tabulated_ld_radial, false>, T>();
-    check_sampler<Runtime<K::radial, true>, T>();
-    check_sampler<Runtime<K::ld_radial, true>, T>();
-    check_sampler<Runtime<K::parallel, true>, T>();
-    check_sampler<Runtime<K::tabulated, true>, T>();
-    check_sampler<Runtime<K::tabulated_ld_radial, true>, T>();
+    for_each_runtime([](auto f) { check_sampler<typename decltype(f)::type, T>(); });
     check_degenerate<Runtime<K::ld_radial, true>, T>(Degenerate::behind);  // below the receiver's horizon
     check_degenerate<Runtime<K::tabulated_ld_radial, true>, T>(Degenerate::behind);
 }
@@ -505,16 +290,7 @@ TEMPLATE_TEST_CASE("sampler concept: DiskLight<RuntimeSampler>, each map, plain 
                                    std::declval<const V2<T>&>())),
                                apse::PointSample<T>>::value,
                   "DiskLight::sample -> PointSample");
-    check_sampler<Light<K::radial, false>, T>();
-    check_sampler<Light<K::ld_radial, false>, T>();
-    check_sampler<Light<K::parallel, false>, T>();
-    check_sampler<Light<K::tabulated, false>, T>();
-    check_sampler<Light<K::tabulated_ld_radial, false>, T>();
-    check_sampler<Light<K::radial, true>, T>();
-    check_sampler<Light<K::ld_radial, true>, T>();
-    check_sampler<Light<K::parallel, true>, T>();
-    check_sampler<Light<K::tabulated, true>, T>();
-    check_sampler<Light<K::tabulated_ld_radial, true>, T>();
+    for_each_runtime_light([](auto f) { check_sampler<typename decltype(f)::type, T>(); });
     check_degenerate<Light<K::ld_radial, true>, T>(Degenerate::behind);  // below the receiver's horizon
 }
 
@@ -524,19 +300,8 @@ TEMPLATE_TEST_CASE("sampler concept: DiskLight<Sampler>, each map, plain and cos
                                    std::declval<const V2<T>&>())),
                                apse::PointSample<T>>::value,
                   "DiskLight::sample -> PointSample");
-    check_sampler<TypedLight<apse::RadialMap, false>, T>();
-    check_sampler<TypedLight<apse::LdRadialMap, false>, T>();
-    check_sampler<TypedLight<apse::ParallelMap, false>, T>();
-    check_sampler<TypedLight<apse::TabulatedMap, false>, T>();
-    check_sampler<TypedLight<apse::TabulatedLdRadialMap, false>, T>();
-    check_sampler<TypedLight<apse::RadialMap, true>, T>();
-    check_sampler<TypedLight<apse::LdRadialMap, true>, T>();
-    check_sampler<TypedLight<apse::ParallelMap, true>, T>();
-    check_sampler<TypedLight<apse::TabulatedMap, true>, T>();
-    check_sampler<TypedLight<apse::TabulatedLdRadialMap, true>, T>();
-    // from the light's stored frame
-    check_sampler<TypedLight<apse::LdRadialMap, false, true>, T>();
-    check_sampler<TypedLight<apse::TabulatedLdRadialMap, true, true>, T>();
+    // each map, plain and cosine-weighted, and two from the light's stored frame
+    for_each_typed_light([](auto f) { check_sampler<typename decltype(f)::type, T>(); });
     // below the receiver's horizon
     check_degenerate<TypedLight<apse::LdRadialMap, true>, T>(Degenerate::behind);
     check_degenerate<TypedLight<apse::TabulatedLdRadialMap, true>, T>(Degenerate::behind);

@@ -12,6 +12,7 @@
 //     report.printf("| ... |\n", ...);
 //     return report.finish(page);   // page "": print everything
 
+#include <algorithm>
 #include <cstdarg>
 #include <cstdio>
 #include <fstream>
@@ -21,6 +22,21 @@
 #include <vector>
 
 namespace apse_tools {
+
+/// x in scientific notation with `digits` digits after the point and a plain exponent (no '+',
+/// no leading zeros): 6.6e-7, 1.3e8; "0" for 0.
+inline std::string sci(double x, int digits = 1) {
+    if (x == 0) return "0";
+    char buf[48];
+    std::snprintf(buf, sizeof buf, "%.*e", digits, x);
+    const std::string s = buf;
+    const std::size_t e = s.find('e');
+    std::string exponent = s.substr(e + 1);
+    const bool negative = exponent[0] == '-';
+    exponent = exponent.substr(1);
+    exponent.erase(0, std::min(exponent.find_first_not_of('0'), exponent.size() - 1));
+    return s.substr(0, e) + "e" + (negative ? "-" : "") + exponent;
+}
 
 /// A measuring tool's command line: a leading `--into PAGE` (`page` empty without one) and the
 /// arguments after it.

@@ -40,18 +40,7 @@ TableRows table(const std::string& relative_path) {
     return t.rows;
 }
 
-/// x in scientific notation with `digits` digits after the point and a plain exponent: 4.8e-16.
-std::string sci(double x, int digits = 1) {
-    char buf[48];
-    std::snprintf(buf, sizeof buf, "%.*e", digits, x);
-    std::string s = buf;
-    const std::size_t e = s.find('e');
-    std::string exponent = s.substr(e + 1);
-    const bool negative = exponent[0] == '-';
-    exponent = exponent.substr(1);
-    exponent.erase(0, std::min(exponent.find_first_not_of('0'), exponent.size() - 1));
-    return s.substr(0, e) + "e" + (negative ? "-" : "") + exponent;
-}
+using apse_tools::sci;
 
 /// n with its thousands apart: 100 000.
 std::string grouped(int n) {

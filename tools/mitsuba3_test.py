@@ -20,6 +20,15 @@ then runs one check inside the venv:
              Mitsuba's own sphere light (a sphere shape with an `area` emitter) on the `sphere`
              scene; sphere_relmse also prints each sampler's equal-time efficiency.
 
+With --into PAGE (sphere_relmse only) the check also writes its results as a markdown table into
+PAGE, replacing what stands between the page's lines `<!-- mitsuba3_test.py: sphere_relmse -->`
+and `<!-- /mitsuba3_test.py: sphere_relmse -->` (as tools/bench_table.py --into does), so that
+the measured table of docs/mitsuba3.md is never copied by hand:
+
+    python3 tools/mitsuba3_test.py sphere_relmse --into docs/mitsuba3.md
+
+Without --into nothing is written.
+
 Exit codes: 0 pass, 1 fail, 77 skipped (a CPU the wheels cannot run on: the message, also written
 to DIR/skipped.txt for tools/test.sh to show, names the missing instructions; only that is a skip,
 anything else that goes wrong is a failure).
@@ -40,6 +49,45 @@ CPU_MARK = "CPU unsupported"
 
 def log(msg):
     print(msg, flush=True)
+
+
+# ------------------------------------------------------------------------------------------------
+# Measured tables written --into a docs page, between its markers (the convention of
+# tools/bench_table.py and tools/doc_report.hpp, with this tool's name)
+
+TOOL = "mitsuba3_test.py"
+SECTIONS = {}  # section name -> its markdown, filled by the checks that have a table
+
+
+def markers(name):
+    return "<!-- %s: %s -->\n" % (TOOL, name), "<!-- /%s: %s -->" % (TOOL, name)
+
+
+def missing_markers(text, names):
+    """The sections of `names` whose begin and end markers are not both in `text`, in order."""
+    out = []
+    for name in names:
+        begin, end = markers(name)
+        i, j = text.find(begin), text.find(end)
+        if i < 0 or j < i:
+            out.append("%s ... %s" % (begin.strip(), end))
+    return out
+
+
+def write_into(page, sections):
+    """Replaces each section of `page` between its markers with its markdown."""
+    with open(page) as f:
+        text = f.read()
+    missing = missing_markers(text, sections)
+    if missing:
+        sys.exit("%s: no %s markers" % (page, ", ".join(missing)))
+    for name, body in sections.items():
+        begin, end = markers(name)
+        i, j = text.find(begin), text.find(end)
+        text = text[:i + len(begin)] + "\n" + body.strip("\n") + "\n\n" + text[j:]
+        log("%s: section %s written" % (page, name))
+    with open(page, "w") as f:
+        f.write(text)
 
 
 def run(cmd, **kw):
@@ -405,9 +453,10 @@ def check_sphere_relmse(plugin_dir):
     how much of the `stratified` sampler's stratification each mapping of the square keeps (and,
     for the cosine_* samplers, the weighting). Printed for the whole image and for the pixels
     that see only the ground (the light straddles their horizon: the cosine_* samplers are the
-    plain map there) or only the wall (the light above their horizon), told apart by the
-    geometric normal (the `aov` integrator). Time: CPU time of the render, the smallest of 5,
-    noisy on a shared machine: printed, never tested. Limits, from the measured ratios (whole
+    plain map there), only the wall (the light above their horizon) or neither (next to the
+    sphere), told apart by the geometric normal (the `aov` integrator); --into writes the same as
+    the table of docs/mitsuba3.md (sphere_relmse_table). Time: CPU time of the render, the
+    smallest of 5, noisy on a shared machine: printed, never tested. Limits, from the measured ratios (whole
     image: radial 0.91, the other plain maps 0.63-0.64, the cosine-weighted ones 0.59; on the
     wall the cosine-weighted ones 0.51x the plain LD-radial map's) with room for changes of the
     maps: whole image, radial <= 1 (no worse than the cone), the other maps <= 0.75; on the wall
@@ -415,6 +464,7 @@ def check_sphere_relmse(plugin_dir):
     import numpy as np
     mi, scenes = load(plugin_dir)
     from compare import timed_render
+    load_start = os.getloadavg()[0]
     w, h = 64, 48
     kw = dict(integrator="direct", hide_emitters=True)
     ref = np.array(mi.render(mi.load_dict(scenes.sphere_scene_dict("mitsuba", w, h, 1024, seed=7, **kw))))
@@ -422,6 +472,7 @@ def check_sphere_relmse(plugin_dir):
     aov["integrator"] = {"type": "aov", "aovs": "n:geo_normal"}
     normal = np.array(mi.render(mi.load_dict(aov)))
     regions = {"all": np.ones((h, w), bool), "ground": normal[..., 1] > 0.999, "wall": normal[..., 2] > 0.999}
+    regions["other"] = ~(regions["ground"] | regions["wall"])  # next to the sphere: silhouette, ground beneath
     r = ref.mean(axis=2)
     scale = 0.01 * r.mean() ** 2
 
@@ -429,51 +480,133 @@ def check_sphere_relmse(plugin_dir):
         e = (img.mean(axis=2) - r) ** 2 / (r ** 2 + scale)
         return {k: float(e[m].mean()) for k, m in regions.items()}
 
-    results = {}
+    results, images = {}, {}
     for light in ("mitsuba",) + scenes.APSE_SAMPLERS:
         img, t = timed_render(mi.load_dict(scenes.sphere_scene_dict(light, w, h, 16, **kw)), 16, 0, 5)
-        results[light] = (rel_mse(img), t)
+        results[light], images[light] = (rel_mse(img), t), img
     (base, base_t), ld_wall = results["mitsuba"], results["ld_radial"][0]["wall"]
-    log("relmse  sphere direct 16 spp stratified: mitsuba %.3e (ground %.3e, wall %.3e; %d / %d pixels), "
-        "%.3f s CPU" % (base["all"], base["ground"], base["wall"], regions["ground"].sum(), regions["wall"].sum(),
-                        base_t))
+    pixels = {k: int(m.sum()) for k, m in regions.items()}
+    log("relmse  sphere direct 16 spp stratified: mitsuba %.3e (ground %.3e, wall %.3e, other %.3e; %d / %d / %d "
+        "pixels), %.3f s CPU" % (base["all"], base["ground"], base["wall"], base["other"], pixels["ground"],
+                                 pixels["wall"], pixels["other"], base_t))
     ok = True
     for light in scenes.APSE_SAMPLERS:
         e, t = results[light]
         limit = 1.0 if light == "radial" else 0.75
         good = e["all"] <= limit * base["all"]
-        line = ("relmse  sphere %-26s %.3e = %.3f x mitsuba (limit %.2f; ground %.3f x, wall %.3f x)"
-                % (light, e["all"], e["all"] / base["all"], limit, e["ground"] / base["ground"], e["wall"] / base["wall"]))
+        line = ("relmse  sphere %-26s %.3e = %.3f x mitsuba (limit %.2f; ground %.3f x, wall %.3f x, other %.3f x)"
+                % (light, e["all"], e["all"] / base["all"], limit, e["ground"] / base["ground"],
+                   e["wall"] / base["wall"], e["other"] / base["other"]))
         if light.startswith("cosine_"):
             good &= e["wall"] <= 0.7 * ld_wall
             line += ", wall %.3f x ld_radial (limit 0.70)" % (e["wall"] / ld_wall)
         ok &= good
         log(line + "; time %.2f x, efficiency %.2f x mitsuba %s"
             % (t / base_t, (base["all"] * base_t) / (e["all"] * t), "ok" if good else "FAIL"))
+    SECTIONS["sphere_relmse"] = sphere_relmse_table(results, images, pixels, (w, h), load_start,
+                                                    os.getloadavg()[0])
     return ok
+
+
+SPHERE_TITLES = {"radial": "radial", "ld_radial": "LD-radial", "parallel": "parallel",
+                 "tabulated_ld_radial": "tabulated LD-radial", "cosine_ld_radial": "cosine LD-radial",
+                 "cosine_tabulated_ld_radial": "cosine tabulated LD-radial"}
+
+
+def sphere_relmse_table(results, images, pixels, size, load_start, load_end):
+    """check_sphere_relmse's results as the markdown table of docs/mitsuba3.md, with the note that
+    says what its numbers are."""
+    import numpy as np
+    import textwrap
+    (base, base_t) = results["mitsuba"]
+    title = lambda light: SPHERE_TITLES.get(light, "`%s`" % light)
+
+    def sci(x):  # 6.78e-3, as the page writes it
+        mantissa, exponent = ("%.2e" % x).split("e")
+        return "%se%d" % (mantissa, int(exponent))
+    rows = ["| sampler | relMSE vs Mitsuba | ground | wall | other pixels | time per render | efficiency vs Mitsuba |",
+            "|---|---:|---:|---:|---:|---:|---:|",
+            "| Mitsuba's sphere light (reference) | 1 (%s) | 1 (%s) | 1 (%s) | 1 (%s) | 1 (%.3g s) | 1 |"
+            % (sci(base["all"]), sci(base["ground"]), sci(base["wall"]), sci(base["other"]), base_t)]
+    for light, (e, t) in results.items():
+        if light != "mitsuba":
+            rows.append("| %s | %.3f× | %.3f× | %.3f× | %.3f× | %.2f× | %.2f× |"
+                        % (title(light), e["all"] / base["all"], e["ground"] / base["ground"],
+                           e["wall"] / base["wall"], e["other"] / base["other"], t / base_t,
+                           (base["all"] * base_t) / (e["all"] * t)))
+    ld = results["ld_radial"][0]
+    share = lambda e: 100 * e["other"] * pixels["other"] / (e["all"] * pixels["all"])
+    cosine = [light for light in results if light.startswith("cosine_")]
+    groups = []  # samplers that render bit-identical images
+    for light in results:
+        for g in groups:
+            if np.array_equal(images[g[0]], images[light]):
+                g.append(light)
+                break
+        else:
+            groups.append([light])
+    twins = [" and ".join("%s %.2f×" % (title(l), results[l][1] / base_t) for l in g)
+             for g in groups if len(g) > 1]
+    note = ("One run of `sphere_relmse`. relMSE of one render at 16 spp against Mitsuba's light at "
+            "1024 spp, as a ratio to Mitsuba's light at 16 spp (its relMSE in parentheses), over the "
+            "whole %d × %d image and over the pixels that see only the ground (%d), only the wall (%d) "
+            "and the %d others, next to the sphere (its silhouette, and the ground beneath it that the "
+            "hidden light lets the camera see), which hold %.0f %% of Mitsuba's squared error and "
+            "%.0f %% of LD-radial's."
+            % (size[0], size[1], pixels["ground"], pixels["wall"], pixels["other"], share(base), share(ld)))
+    walls = ["%.3f×" % (results[l][0]["wall"] / ld["wall"]) for l in cosine]
+    if len(set(walls)) == 1:
+        note += " On the wall, the cosine-weighted samplers' relMSE is %s the plain LD-radial map's." % walls[0]
+    elif walls:
+        note += (" On the wall, the cosine-weighted samplers' relMSE is %s the plain LD-radial map's."
+                 % ", ".join("%s for %s" % (r, title(l)) for r, l in zip(walls, cosine)))
+    note += (" Time per render: the CPU time (`time.process_time`) of one 16 spp render, the smallest of "
+             "5, as a ratio to Mitsuba's light (its time in parentheses); efficiency = 1/(relMSE · time), "
+             "the equal-time measure, as a ratio to Mitsuba's light. The times come from this one run on "
+             "a shared machine (%d cores, load average %.1f when the check started, %.1f when it ended) "
+             "and are noisy" % (len(os.sched_getaffinity(0)), load_start, load_end))
+    note += (": samplers that render identical images timed %s." % "; ".join(twins) if twins else ".")
+    note = textwrap.fill(note, 100, break_long_words=False, break_on_hyphens=False)
+    return "\n".join(rows) + "\n\n" + note + "\n"
 
 
 CHECKS = {"identity": check_identity, "unbiased": check_unbiased, "relmse": check_relmse,
           "sphere_identity": check_sphere_identity, "sphere_unbiased": check_sphere_unbiased,
           "sphere_relmse": check_sphere_relmse}
+TABLES = {"sphere_relmse": ["sphere_relmse"]}  # check -> the sections it writes --into a page
 
 
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("command", choices=["setup"] + sorted(CHECKS))
     ap.add_argument("--dir", default=os.path.join(ROOT, "build", "mitsuba3"))
+    ap.add_argument("--into", metavar="PAGE",
+                    help="write the check's table into PAGE between its markers (%s)" % ", ".join(sorted(TABLES)))
     ap.add_argument("--in-venv", metavar="PLUGIN_DIR", help=argparse.SUPPRESS)
     a = ap.parse_args()
+    if a.into:
+        if a.command not in TABLES:
+            ap.error("--into: %s writes no table (checks with a table: %s)" % (a.command, ", ".join(sorted(TABLES))))
+        try:
+            with open(a.into) as f:
+                missing = missing_markers(f.read(), TABLES[a.command])
+        except OSError as e:
+            sys.exit("mitsuba3: --into %s: %s" % (a.into, e.strerror))
+        if missing:  # said before rendering, not after it
+            sys.exit("%s: no %s markers" % (a.into, ", ".join(missing)))
     if a.in_venv:
         t0 = time.time()
         ok = CHECKS[a.command](a.in_venv)
         log("mitsuba3 %s: %s in %.1f s" % (a.command, "passed" if ok else "FAILED", time.time() - t0))
+        if a.into:  # written even when a limit fails (the exit code says so), as projection_report does
+            write_into(a.into, {name: SECTIONS[name] for name in TABLES[a.command]})
         sys.exit(0 if ok else 1)
     py, bdir = setup(os.path.abspath(a.dir))
     if a.command == "setup":
         log(py)
         return
-    r = subprocess.run([py, os.path.abspath(__file__), a.command, "--in-venv", bdir])
+    into = ["--into", os.path.abspath(a.into)] if a.into else []
+    r = subprocess.run([py, os.path.abspath(__file__), a.command, "--in-venv", bdir] + into)
     sys.exit(r.returncode)
 
 

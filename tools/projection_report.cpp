@@ -36,19 +36,7 @@ const char* shape_name(Light light) {
     return "";
 }
 
-/// x with two significant digits, the exponent without '+' and leading zeros (2.7e-16, 1.3e8).
-std::string sci(double x) {
-    if (x == 0) return "0";
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%.1e", x);
-    std::string s = buf;
-    const std::size_t e = s.find('e');
-    std::string mantissa = s.substr(0, e), exponent = s.substr(e + 1);
-    const bool negative = exponent[0] == '-';
-    exponent = exponent.substr(1);
-    while (exponent.size() > 1 && exponent[0] == '0') exponent.erase(0, 1);
-    return mantissa + "e" + (negative ? "-" : "") + exponent;
-}
+using apse_tools::sci;
 
 /// The largest errors of one shape's table in T; `ok` false if a row exceeds its budget or its
 /// emptiness differs from the table's.
