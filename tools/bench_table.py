@@ -28,6 +28,10 @@ benchmark names:
   per-run ratio, every time the median time, and a second table gives each ratio's spread
   (lowest–highest) over the layouts.
 
+  From the same outputs, the cost table of docs/cosine_weighted.md (section cosine_cost): the
+  plain maps and the cosine-weighted samplers as ratios to the plain TabulatedLdRadialMap, each
+  taken within one run and then the median over the runs, like the speed table's.
+
 Uses the "median" aggregates when repetitions were run, the plain runs otherwise. The header
 states the CPU and compiler recorded in the JSON context. Only the standard library is needed.
 
@@ -46,12 +50,14 @@ states the CPU and compiler recorded in the JSON context. Only the standard libr
 
 With --into PAGE the tables are written into the markdown page instead of printed: each section
 (disks: the disk table and its spread; breakdown: the cost breakdown; spheres: the sphere-light
-table; elliptic: the elliptic-integral table; mis_query: the MIS-query table; projection: the
-projection speed table) replaces what stands between the page's lines
-`<!-- bench_table.py: NAME -->` and `<!-- /bench_table.py: NAME -->`, so that a measured table
-lives in one place and is never copied by hand:
+table; cosine_cost: the cosine-weighted cost table; elliptic: the elliptic-integral table;
+mis_query: the MIS-query table; projection: the projection speed table) replaces what stands
+between the page's lines `<!-- bench_table.py: NAME -->` and `<!-- /bench_table.py: NAME -->`, so
+that a measured table lives in one place and is never copied by hand. --into may be given more
+than once: each section goes to every page that has its markers, and it is an error (nothing
+written) if none has them:
 
-    python3 tools/bench_table.py --into docs/speed.md samplers.json
+    python3 tools/bench_table.py --into docs/speed.md --into docs/cosine_weighted.md samplers.json
     python3 tools/bench_table.py --into docs/elliptic.md elliptic.json
     python3 tools/bench_table.py --into docs/tabulated.md mis_query.json
     python3 tools/bench_table.py --into docs/projection.md projection.json
@@ -75,19 +81,51 @@ def section(name):
     SECTIONS[name] = buf.getvalue()
 
 
-def write_into(page):
-    """Replaces each collected section of `page` between its markers (an error if one is missing)."""
-    with open(page) as f:
-        text = f.read()
-    for name, body in SECTIONS.items():
-        begin, end = '<!-- bench_table.py: %s -->\n' % name, '<!-- /bench_table.py: %s -->' % name
+def markers(name, tool='bench_table.py'):
+    """The lines between which a page holds the section `name` that `tool` writes."""
+    return '<!-- %s: %s -->\n' % (tool, name), '<!-- /%s: %s -->' % (tool, name)
+
+
+def missing_markers(text, names, tool='bench_table.py'):
+    """The sections of `names` whose begin and end markers are not both in `text`, in order."""
+    out = []
+    for name in names:
+        begin, end = markers(name, tool)
         i, j = text.find(begin), text.find(end)
         if i < 0 or j < i:
-            sys.exit('%s: no %s ... %s markers' % (page, begin.strip(), end))
-        text = text[:i + len(begin)] + '\n' + body.strip('\n') + '\n\n' + text[j:]
+            out.append('%s ... %s' % (begin.strip(), end))
+    return out
+
+
+def write_into(pages, sections=None, tool='bench_table.py'):
+    """Replaces each section (default: the collected SECTIONS) between its markers in every one of
+    `pages` that has them (an error, with nothing written, if a section's markers are in none of
+    them). Other tools (mitsuba3_test.py) write their tables with their own name in the markers."""
+    sections = SECTIONS if sections is None else sections
+    texts = {}
+    for page in pages:
+        with open(page) as f:
+            texts[page] = f.read()
+    written = []
+    for name, body in sections.items():
+        begin, end = markers(name, tool)
+        found = False
+        for page in pages:
+            if missing_markers(texts[page], [name], tool):
+                continue
+            text = texts[page]
+            i, j = text.find(begin), text.find(end)
+            texts[page] = text[:i + len(begin)] + '\n' + body.strip('\n') + '\n\n' + text[j:]
+            written.append((page, name))
+            found = True
+        if not found:
+            sys.exit('%s: no %s ... %s markers' % (' or '.join(pages), begin.strip(), end))
+    for page in pages:
+        if any(p == page for p, _ in written):
+            with open(page, 'w') as f:
+                f.write(texts[page])
+    for page, name in written:
         print('%s: section %s written' % (page, name), file=sys.stderr)
-    with open(page, 'w') as f:
-        f.write(text)
 
 # benchmark name prefix -> column title
 PEERS = [
@@ -161,6 +199,25 @@ SPHERES = [
     ('sphere_cosine_parallel_above', '`CosineWeighted<ParallelMap>`, cap above the horizon'),
     ('sphere_cosine_parallel_cut', '`CosineWeighted<ParallelMap>`, cap cut by the horizon'),
 ]
+# docs/cosine_weighted.md's cost table (section cosine_cost): benchmark sampler name -> row title,
+# in table order; every ratio is to COSINE_COST_REFERENCE in the same run, and the reference and
+# COSINE_COST_BOLD (the default warp, in bold) show their median ns
+COSINE_COST_REFERENCE = 'tabulated_ld_radial'
+COSINE_COST_BOLD = 'cosine_tabulated_ld_radial'
+COSINE_COST = [
+    ('tabulated_ld_radial', '`TabulatedLdRadialMap` (reference)'),
+    ('tabulated', '`TabulatedMap`'),
+    ('ld_radial', '`LdRadialMap`'),
+    ('radial', '`RadialMap`'),
+    ('parallel', '`ParallelMap`'),
+    ('cosine_radial', '`CosineWeighted<RadialMap>` (exact sampler)'),
+    ('cosine_ld_radial', '`CosineWeighted<LdRadialMap>` (exact sampler)'),
+    ('cosine_parallel', '`CosineWeighted<ParallelMap>` (exact sampler)'),
+    ('cosine_tabulated', '`CosineWeighted<TabulatedMap>` (warp)'),
+    ('cosine_tabulated_ld_radial', '**`CosineWeighted<TabulatedLdRadialMap>` (warp)**'),
+    ('cosine_tabulated_ld_radial_16_nodes', 'the same, 16 nodes'),
+    ('cosine_tabulated_ld_radial_32_nodes', 'the same, 32 nodes'),
+]
 # set-up parts (cost breakdown only)
 PARTS = [('projection', 'project_disk'), ('projection_solid_angle', 'project_disk + solid_angle')]
 # maps in the cost breakdown, and whether their set-up computes the solid angle
@@ -227,19 +284,28 @@ def reference_of(sampler):
     return 'sphere_cone' if sampler.startswith('sphere_') else 'area'
 
 
+def layout_ratios(layouts, keys, reference):
+    """Per key (sampler, type, samples): the median time over the runs (`layouts`, from
+    sampler_runs), and the list of per-run ratios of its time to that of the key reference(key)
+    (each ratio taken within one run; keys with no run holding both get none). Every table of
+    ratios shows the median of these lists."""
+    times, ratios = {}, {}
+    for key in keys:
+        t = [ns(r[key]) for r, _, _ in layouts if key in r]
+        times[key] = median(t)
+        ref = reference(key)
+        q = [ns(r[key]) / ns(r[ref]) for r, _, _ in layouts if key in r and ref in r]
+        if q:
+            ratios[key] = q
+    return times, ratios
+
+
 def samplers_table(datas):
     layouts = [sampler_runs(d) for d in datas]
     have_median, reps = layouts[0][1], layouts[0][2]
     keys = set().union(*(set(r) for r, _, _ in layouts))
     # per key: the median time over the layouts, and the per-layout ratios to the reference
-    times, ratios = {}, {}
-    for key in keys:
-        t = [ns(r[key]) for r, _, _ in layouts if key in r]
-        times[key] = median(t)
-        ref = (reference_of(key[0]),) + key[1:]
-        q = [ns(r[key]) / ns(r[ref]) for r, _, _ in layouts if key in r and ref in r]
-        if q:
-            ratios[key] = q
+    times, ratios = layout_ratios(layouts, keys, lambda key: (reference_of(key[0]),) + key[1:])
     extra = ''
     if len(datas) > 1:
         extra = '; median over %d code layouts (%s)' % (len(datas), ', '.join(layout_name(d) for d in datas))
@@ -269,6 +335,44 @@ def samplers_table(datas):
                      'horizon or cut by it. Ratio = median time / median time of pbrt-v4\'s cone sampling '
                      'in the same run (the SphereLight rows: of cone sampling with the point and distance; '
                      '> 1: slower)')
+    cosine_keys = {k for k in keys if k[0] in dict(COSINE_COST) and k[2] > 0}
+    if (any(k[0] == COSINE_COST_REFERENCE for k in cosine_keys) and
+            any(k[0].startswith('cosine_') for k in cosine_keys)):
+        with section('cosine_cost'):
+            print(head)
+            print()
+            cosine_cost_table(layouts, cosine_keys, len(datas))
+
+
+def cosine_cost_table(layouts, keys, n_layouts):
+    """docs/cosine_weighted.md's cost table: each row's ratio to COSINE_COST_REFERENCE (per run, then
+    the median over the runs, as in the speed table)."""
+    times, ratios = layout_ratios(layouts, keys, lambda key: (COSINE_COST_REFERENCE,) + key[1:])
+    cols = [('double', 1), ('double', 16), ('float', 1), ('float', 16)]
+
+    def cell(key, ty, n):
+        if (key, ty, n) not in times:
+            return '—'
+        if key == COSINE_COST_REFERENCE:
+            return '1 (%.0f ns)' % times[(key, ty, n)]
+        if (key, ty, n) not in ratios:
+            return '%.0f ns' % times[(key, ty, n)]
+        q = median(ratios[(key, ty, n)])
+        if key == COSINE_COST_BOLD:
+            return '**%.2f×** (%.0f ns)' % (q, times[(key, ty, n)])
+        return '%.2f×' % q
+
+    print('| sampler | ' + ' | '.join('%s, set-up + %d' % c for c in cols) + ' |')
+    print('|---|' + '---:|' * len(cols))
+    for key, title in COSINE_COST:
+        if any(k[0] == key for k in keys):
+            print('| ' + ' | '.join([title] + [cell(key, ty, n) for ty, n in cols]) + ' |')
+    print()
+    print('Set-up + 1 or 16 samples per fresh shading point, the lights and receivers of the speed '
+          'table. Ratio = median time / median time of `TabulatedLdRadialMap` in the same run' +
+          (', then the median of that ratio over the %d runs' % n_layouts if n_layouts > 1 else '') +
+          ' (> 1: slower than the plain tabulated LD-radial map); ns: median time' +
+          (' over the runs.' if n_layouts > 1 else '.'))
 
 
 def ratio_table(layouts, keys, times, ratios, titles, n_layouts, note):
@@ -374,15 +478,16 @@ def load(data):
 
 def main():
     args = sys.argv[1:]
-    page = None
-    if args[:1] == ['--into']:
+    pages = []
+    while args[:1] == ['--into']:
         if len(args) < 2:
-            sys.exit('usage: bench_table.py [--into PAGE] [JSON...]')
-        page, args = args[1], args[2:]
+            sys.exit('usage: bench_table.py [--into PAGE]... [JSON...]')
+        pages.append(args[1])
+        args = args[2:]
     datas = [json.load(open(f)) for f in args] or [json.load(sys.stdin)]
     tables(datas)
-    if page:
-        write_into(page)
+    if pages:
+        write_into(pages)
     else:
         print('\n\n'.join(body.strip('\n') for body in SECTIONS.values()))
 

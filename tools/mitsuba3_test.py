@@ -41,6 +41,8 @@ import subprocess
 import sys
 import time
 
+import bench_table  # tools/: the --into convention of the measured tables
+
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 PINS = ["mitsuba==3.9.1", "drjit==1.5.0", "nanobind==3.1.0", "numpy==2.4.6"]
 SKIP = 77
@@ -59,35 +61,14 @@ TOOL = "mitsuba3_test.py"
 SECTIONS = {}  # section name -> its markdown, filled by the checks that have a table
 
 
-def markers(name):
-    return "<!-- %s: %s -->\n" % (TOOL, name), "<!-- /%s: %s -->" % (TOOL, name)
-
-
 def missing_markers(text, names):
-    """The sections of `names` whose begin and end markers are not both in `text`, in order."""
-    out = []
-    for name in names:
-        begin, end = markers(name)
-        i, j = text.find(begin), text.find(end)
-        if i < 0 or j < i:
-            out.append("%s ... %s" % (begin.strip(), end))
-    return out
+    """The sections of `names` whose markers are not both in `text`."""
+    return bench_table.missing_markers(text, names, TOOL)
 
 
 def write_into(page, sections):
     """Replaces each section of `page` between its markers with its markdown."""
-    with open(page) as f:
-        text = f.read()
-    missing = missing_markers(text, sections)
-    if missing:
-        sys.exit("%s: no %s markers" % (page, ", ".join(missing)))
-    for name, body in sections.items():
-        begin, end = markers(name)
-        i, j = text.find(begin), text.find(end)
-        text = text[:i + len(begin)] + "\n" + body.strip("\n") + "\n\n" + text[j:]
-        log("%s: section %s written" % (page, name))
-    with open(page, "w") as f:
-        f.write(text)
+    bench_table.write_into([page], sections, TOOL)
 
 
 def run(cmd, **kw):

@@ -2,7 +2,8 @@
 # The sampler speed table of docs/speed.md, robust to code layout: builds bench_samplers and its
 # three layout variants (bench/CMakeLists.txt: functions aligned to 32, 64, 128 bytes) in a Release
 # build, runs each (medians of interleaved repetitions), and prints the table of the median ratio
-# over the four layouts, their spread, and the cost breakdown (tools/bench_table.py).
+# over the four layouts, their spread, the cost breakdown and docs/cosine_weighted.md's cost table
+# (tools/bench_table.py; docs/speed.md#regenerate writes them into the pages).
 #
 #   bash tools/speed.sh [BUILD_DIR] [REPETITIONS]     (default build/release, 11; ~6 minutes)
 #
