@@ -28,6 +28,14 @@ benchmark names:
   per-run ratio, every time the median time, and a second table gives each ratio's spread
   (lowest–highest) over the layouts.
 
+  Under the disk table the tool states the goals against lean area sampling (DISK_GOALS: the
+  tabulated maps with 16 samples ≤ 2.5×, the tabulated LD-radial map's set-up + 1 ≤ 4×, the exact
+  LD-radial map's ≤ 8×, the parallel map's ≤ 10×, in double and float; float at least as fast as
+  double for every sampler), each with its median, spread and "met" or "not met"; then the
+  tabulated LD-radial map's time against the exact one's (numerical inversion vs tabulation) and
+  the fraction of samples GamitoSingleShot rejects. Every ratio there is taken within one run and
+  then the median over the runs, as in the table.
+
   From the same outputs, the cost table of docs/cosine_weighted.md (section cosine_cost): the
   plain maps and the cosine-weighted samplers as ratios to the plain TabulatedLdRadialMap, each
   taken within one run and then the median over the runs, like the speed table's.
@@ -49,7 +57,7 @@ states the CPU and compiler recorded in the JSON context. Only the standard libr
     python3 tools/bench_table.py --into docs/projection.md projection.json
 
 With --into PAGE the tables are written into the markdown page instead of printed: each section
-(disks: the disk table and its spread; breakdown: the cost breakdown; spheres: the sphere-light
+(disks: the disk table, its spread and the goal verdicts; breakdown: the cost breakdown; spheres: the sphere-light
 table; cosine_cost: the cosine-weighted cost table; elliptic: the elliptic-integral table;
 mis_query: the MIS-query table; projection: the projection speed table) replaces what stands
 between the page's lines `<!-- bench_table.py: NAME -->` and `<!-- /bench_table.py: NAME -->`, so
@@ -218,6 +226,20 @@ COSINE_COST = [
     ('cosine_tabulated_ld_radial_16_nodes', 'the same, 16 nodes'),
     ('cosine_tabulated_ld_radial_32_nodes', 'the same, 32 nodes'),
 ]
+# the goals against lean area sampling printed under the disk table: (title, [(sampler, samples)],
+# the largest ratio that meets the goal), each checked in double and in float on the median over
+# the runs of the ratio measured within one run (the table's ratio); and float at least as fast as
+# double for every sampler (float time / double time within one run, the median over the runs, <= 1)
+DISK_GOALS = [
+    ('`TabulatedMap` and `TabulatedLdRadialMap`, set-up + 16', [('tabulated', 16), ('tabulated_ld_radial', 16)], 2.5),
+    ('`TabulatedLdRadialMap`, set-up + 1', [('tabulated_ld_radial', 1)], 4.0),
+    ('`LdRadialMap` (exact), set-up + 1', [('ld_radial', 1)], 8.0),
+    ('`ParallelMap`, set-up + 1', [('parallel', 1)], 10.0),
+]
+# numerical inversion vs tabulation: this sampler's time / that one's, within one run
+INVERSION = ('tabulated_ld_radial', 'ld_radial')
+# the sampler whose rejected fraction (1 − accepted) is stated under the disk table
+REJECTING = 'gamito_single_shot'
 # set-up parts (cost breakdown only)
 PARTS = [('projection', 'project_disk'), ('projection_solid_angle', 'project_disk + solid_angle')]
 # maps in the cost breakdown, and whether their set-up computes the solid angle
@@ -325,6 +347,9 @@ def samplers_table(datas):
                      'samples, 1024 seeded unit disks 0.1–1000 radii away (log-uniform), all orientations, '
                      'the same points of the square for every sampler. Ratio = median time / median time of '
                      'DiskAreaSampler in the same run (> 1: slower than area sampling)')
+        with section('disks'):
+            print(SECTIONS['disks'], end='')
+            disk_verdicts(layouts, disk_keys, ratios, len(datas))
         with section('breakdown'):
             breakdown_table(times, ratios)
     if sphere_keys:
@@ -375,6 +400,22 @@ def cosine_cost_table(layouts, keys, n_layouts):
           (' over the runs.' if n_layouts > 1 else '.'))
 
 
+def counter_values(first, key, name):
+    """A sampler's counter `name` (mean_iterations, accepted) in (double, float) from one run
+    (`first`, from sampler_runs): of the set-up + 16 run, else of the set-up + 1 run; None where
+    absent."""
+    vals = []
+    for ty in ('double', 'float'):
+        b = first.get((key, ty, 16)) or first.get((key, ty, 1))
+        vals.append(b[name] if b is not None and name in b else None)
+    return vals
+
+
+def spread(q):
+    """The spread of the per-run ratios `q` (lowest–highest), as the spread table writes it."""
+    return '%.1f–%.1f×' % (min(q), max(q))
+
+
 def ratio_table(layouts, keys, times, ratios, titles, n_layouts, note):
     """One table of ratios (to each row's reference_of) for the benchmark keys `keys`."""
     first = layouts[0][0]
@@ -400,10 +441,7 @@ def ratio_table(layouts, keys, times, ratios, titles, n_layouts, note):
         cells = [title] + [cell(key, ty, n) for ty, n in cols]
 
         def counter(name, fmt):
-            vals = []
-            for ty in ('double', 'float'):
-                b = first.get((key, ty, 16)) or first.get((key, ty, 1))
-                vals.append(fmt % b[name] if b is not None and name in b else None)
+            vals = [fmt % v if v is not None else None for v in counter_values(first, key, name)]
             return '—' if all(v is None for v in vals) else ', '.join(v or '—' for v in vals)
         cells.append(counter('mean_iterations', '%.3g'))
         cells.append(counter('accepted', '%.3g'))
@@ -424,8 +462,93 @@ def ratio_table(layouts, keys, times, ratios, titles, n_layouts, note):
             cells = [title]
             for ty, n in cols:
                 q = ratios.get((key, ty, n))
-                cells.append('—' if not q else '%.1f–%.1f×' % (min(q), max(q)))
+                cells.append('—' if not q else spread(q))
             print('| ' + ' | '.join(cells) + ' |')
+
+
+def disk_verdicts(layouts, keys, ratios, n_layouts):
+    """Under the disk table: the goals of DISK_GOALS and float against double, each with its median
+    over the runs, its spread and whether it is met; the cost of tabulation against numerical
+    inversion (INVERSION); the fraction REJECTING rejects. Every ratio is taken within one run
+    (layout_ratios), as the table's."""
+    types = ('double', 'float')
+    several = n_layouts > 1
+
+    def value(q, unit='×'):
+        """The median of the per-run ratios `q`, and their spread when there are several runs."""
+        if not several:
+            return '%.2f%s' % (median(q), unit)
+        return '%.2f%s (%.2f–%.2f%s)' % (median(q), unit, min(q), max(q), unit)
+
+    def verdict(met):
+        """'met' / '**not met**' for {type: met}, or which types meet it."""
+        if all(met.values()):
+            return 'met'
+        if not any(met.values()):
+            return '**not met**'
+        return '; '.join(('met in %s' if met[ty] else '**not met** in %s') % ty for ty in types if ty in met)
+
+    print()
+    print('Goals against the lean reference, written by `tools/bench_table.py` from the runs above: '
+          + ('each the median over the %d runs of the ratio measured within one run (the table\'s), '
+             'its spread over the runs in parentheses:' % n_layouts if several else
+             'each the ratio of the table (one run):'))
+    print()
+    for title, members, goal in DISK_GOALS:
+        entries = [(s, ty, n) for s, n in members for ty in types if (s, ty, n) in ratios]
+        if not entries:
+            continue
+        met = {ty: all(median(ratios[k]) <= goal for k in entries if k[1] == ty)
+               for ty in types if any(k[1] == ty for k in entries)}
+        parts = []
+        for s, n in members:
+            vals = ['%s in %s' % (value(ratios[(s, ty, n)]), ty) for ty in types if (s, ty, n) in ratios]
+            if vals:
+                parts.append((dict(SAMPLERS)[s] + ' ' if len(members) > 1 else '') + ', '.join(vals))
+        print('* %s ≤ %g×: %s — %s.' % (title, goal, verdict(met), '; '.join(parts)))
+    # float against double: each float key's time over the double key's, within one run
+    fd_keys = {k for k in keys if k[1] == 'float' and k[2] > 0 and (k[0], 'double', k[2]) in keys}
+    _, fd = layout_ratios(layouts, fd_keys, lambda key: (key[0], 'double', key[2]))
+    if fd:
+        samplers = sorted({k[0] for k in fd})
+        per_n = []
+        for n in sorted({k[2] for k in fd}):
+            meds = [(median(q), k[0]) for k, q in fd.items() if k[2] == n]
+            worst = max(meds)
+            per_n.append('set-up + %d %.2f–%.2f, the highest %s %s' % (
+                n, min(meds)[0], worst[0], dict(SAMPLERS).get(worst[1], '`%s`' % worst[1]),
+                value(fd[(worst[1], 'float', n)], '')))
+        slower = sorted((k[2], k[0]) for k, q in fd.items() if median(q) > 1)
+        print('* float at least as fast as double (float time / double time per sampler %s; over the %d '
+              'samplers): %s — %s%s.' % (
+                  'within each run, the median over the runs' if several else 'in the run',
+                  len(samplers), 'met' if not slower else '**not met**', '; '.join(per_n),
+                  '' if not slower else '; above 1: ' + ', '.join(
+                      '%s set-up + %d' % (dict(SAMPLERS).get(s, '`%s`' % s), n) for n, s in slower)))
+    # numerical inversion against tabulation: the tabulated map's time over the exact map's
+    tab, exact = INVERSION
+    inv_keys = {k for k in keys if k[0] == tab and k[2] > 0 and (exact,) + k[1:] in keys}
+    _, inv = layout_ratios(layouts, inv_keys, lambda key: (exact,) + key[1:])
+    if inv:
+        cases = []
+        for n in sorted({k[2] for k in inv}):
+            vals = ['%s in %s' % (value(inv[(tab, ty, n)]), ty) for ty in types if (tab, ty, n) in inv]
+            cases.append('with %s per shading point %s' % ('one sample' if n == 1 else '%d samples' % n,
+                                                           ' and '.join(vals)))
+        print()
+        print('Numerical inversion vs tabulation: %s\'s time / %s\'s %s: %s.' % (
+            dict(SAMPLERS)[tab], dict(SAMPLERS)[exact],
+            'within each run (median over the runs, spread in parentheses)' if several else 'in the run',
+            '; '.join(cases)))
+    accepted = counter_values(layouts[0][0], REJECTING, 'accepted')
+    if any(a is not None for a in accepted):
+        print()
+        rejected = ['%.0f %%' % (100 * (1 - a)) if a is not None else None for a in accepted]
+        if rejected[0] == rejected[1]:
+            which = '%s of its samples in double and in float' % rejected[0]
+        else:
+            which = '%s of its samples' % ' and '.join('%s in %s' % (r, ty) for r, ty in zip(rejected, types) if r)
+        print('%s rejects %s (1 − the accepted column).' % (dict(SAMPLERS)[REJECTING], which))
 
 
 def breakdown_table(times, ratios):
