@@ -120,6 +120,47 @@ void check_points(const Vec3<T>& o, const Vec3<T>& c, T r, int n, apse_test::Rng
     CHECK(rim_misses <= n / 100);
 }
 
+/// Every sample of the cosine-weighted `light` (receiver normal n_r) with pdf > 0: a unit
+/// direction inside the cap and above the receiver's horizon, its nearest point on the sphere
+/// at the reference distance (tolerance as check_points), and pdf(direction) the sample's pdf to
+/// rounding: the sample's density is z / Omega_perp from the sampler's own construction, pdf()'s
+/// n_r·w / Omega_perp from the rounded w, whose height n_r·w carries a few eps of absolute
+/// rounding — relative 1/(n_r·w) times that near the horizon — so 64 eps (1 + 1/(n_r·w))
+/// relative; within rounding of the rim pdf() may read 0. Returns the number of samples with
+/// pdf > 0.
+template <class Light, class T>
+int check_cosine_points(const Light& light, const Vec3<T>& o, const Vec3<T>& c, T r, const Vec3<T>& n_r, int n,
+                        apse_test::Rng& rng) {
+    const glm::dvec3 od(o), cd(c), nd = glm::normalize(glm::dvec3(n_r));
+    const double dist = glm::length(cd - od), eps = double(apse::epsilon<T>());
+    const long double alpha = std::asin((long double)r / dist);
+    const double tol_t = 64 * eps * (1 + dist / (dist - r));
+    int accepted = 0;
+    for (int i = 0; i < n; ++i) {
+        const Vec2<T> u(rng.uniform<T>(), rng.uniform<T>());
+        const auto s = light.sample(u);
+        INFO("u = (" << u.x << ", " << u.y << "), dist/r = " << dist / r);
+        REQUIRE(s.pdf >= T(0));
+        if (s.pdf == T(0)) continue;
+        ++accepted;
+        const glm::dvec3 w(s.direction);
+        CHECK(std::fabs(glm::length(w) - 1) <= 8 * eps);
+        CHECK(glm::dot(w, nd) > 0);
+        CHECK(angle_from(w, cd - od) <= alpha * (1 + 16 * eps) + 16 * eps);
+        const long double t_ref = hit_reference(od, cd, double(r), w);
+        CHECK(std::fabs(s.distance - t_ref) <= tol_t * t_ref);
+        const glm::dvec3 p(s.point);
+        CHECK(glm::length(p - (od + double(s.distance) * w)) <= 16 * eps * (glm::length(od) + s.distance));
+        CHECK(std::fabs(glm::length(p - cd) - r) <= 64 * eps * (r + glm::length(cd) + dist));
+        CHECK(glm::dot(p - cd, w) <= 64 * eps * (r + glm::length(cd) + dist));
+        const T p_light = light.pdf(s.direction);
+        const double height = glm::dot(w, nd);
+        if (p_light != T(0)) CHECK(std::fabs(double(p_light) - double(s.pdf)) <= 64 * eps * (1 + 1 / height) * double(s.pdf));
+        else CHECK(angle_from(w, cd - od) >= alpha * (1 - 64 * eps) - 64 * eps);
+    }
+    return accepted;
+}
+
 template <class T> struct Sphere {
     Vec3<T> o, c;
     T r;
@@ -267,6 +308,43 @@ TEMPLATE_TEST_CASE("sphere light: points on the sphere, distances, pdf and the s
     using T = TestType;
     check_every_map<T, apse::RadialMap<T>, apse::LdRadialMap<T>, apse::ParallelMap<T>, apse::TabulatedMap<T>,
                     apse::TabulatedLdRadialMap<T>>(200);
+}
+
+TEMPLATE_TEST_CASE("sphere light: cosine-weighted points on the sphere and distances", "[sphere_light]", float, double) {
+    using T = TestType;
+    apse_test::Rng rng(26);
+    const apse::TabulationView table = apse_test::default_table().view();
+    for (const Sphere<T>& s : spheres<T>()) {
+        const glm::dvec3 axis = glm::normalize(glm::dvec3(s.c) - glm::dvec3(s.o));
+        const glm::dvec3 side = glm::normalize(glm::cross(axis, glm::dvec3(0, 0, 1)));
+        const double alpha = std::asin(double(s.r) / glm::length(glm::dvec3(s.c) - glm::dvec3(s.o)));
+        // receivers: facing the centre (cap above the horizon), the horizon through the cap with
+        // its centre above (g = pi/2 − alpha/2) and below (g = pi/2 + alpha/2)
+        for (double g : {0.3 * (1.5707963267948966 - alpha), 1.5707963267948966 - 0.5 * alpha, 1.5707963267948966 + 0.5 * alpha}) {
+            const Vec3<T> n_r(std::cos(g) * axis + std::sin(g) * side);
+            INFO("dist/r = " << glm::length(glm::dvec3(s.c) - glm::dvec3(s.o)) / s.r << ", g = " << g);
+            const apse::SphereLight<apse::CosineWeighted<apse::LdRadialMap<T>>> ld(s.o, s.c, s.r, n_r);
+            const apse::SphereLight<apse::CosineWeighted<apse::ParallelMap<T>>> parallel(s.o, s.c, s.r, n_r);
+            const apse::SphereLight<apse::CosineWeighted<apse::TabulatedLdRadialMap<T>>> tab(s.o, s.c, s.r, table, n_r);
+            REQUIRE(ld.cosine_weighted());
+            CHECK(check_cosine_points(ld, s.o, s.c, s.r, n_r, 200, rng) >= 190);
+            CHECK(check_cosine_points(parallel, s.o, s.c, s.r, n_r, 200, rng) >= 190);
+            CHECK(check_cosine_points(tab, s.o, s.c, s.r, n_r, 200, rng) >= 190);
+            // the run-time choice places each sample exactly where the typed light does
+            for (int m = 0; m < 5; ++m) {
+                const apse::SphereLight<apse::RuntimeSampler<T>> runtime(s.o, s.c, s.r, apse::MapKind(m), table, n_r);
+                CHECK(check_cosine_points(runtime, s.o, s.c, s.r, n_r, 50, rng) >= 45);
+            }
+            const apse::SphereLight<apse::RuntimeSampler<T>> runtime(s.o, s.c, s.r, apse::MapKind::ld_radial, table, n_r);
+            for (int i = 0; i < 50; ++i) {
+                const Vec2<T> u(rng.uniform<T>(), rng.uniform<T>());
+                const auto a = ld.sample(u), b = runtime.sample(u);
+                CHECK(same(a.pdf, b.pdf));
+                CHECK(same(a.distance, b.distance));
+                CHECK(same(a.point, b.point));
+            }
+        }
+    }
 }
 
 TEMPLATE_TEST_CASE("sphere light: solid angle and the stateless pdf of misses", "[sphere_light]", float, double) {

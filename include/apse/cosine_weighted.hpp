@@ -109,6 +109,15 @@ public:
         return {u_.plain.ellipse().z, T(0)};
     }
 
+    /// sample(u) placed on a sphere by `target` (SphereLight: detail::SphereTarget) the way the
+    /// sampler in use does it.
+    template <class Target>
+    APSE_HOT_INLINE PointSample<T> sample_on_sphere(const vec2& u, const Target& target) const noexcept {
+        if (mode_ == Mode::cap) return target.sample(u_.cap, u);
+        if (mode_ == Mode::plain) return target.sample(u_.plain, u);
+        return target.place(sample(u), T(0));
+    }
+
     /// CosineWeighted::pdf.
     APSE_FUNC T pdf(const vec3& d) const noexcept {
         if (mode_ == Mode::cap) return u_.cap.pdf(d);

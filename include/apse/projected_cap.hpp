@@ -229,25 +229,26 @@ public:
         const vec2 uc = detail::clamp_unit(u, ok);
         if (!ok) return {c_, T(0)};
         if (!cut_) {
-            // the concentric map's disk point (dx, dy), its flat-disk point Q = cos a c + sin a (dx e1 + dy e2),
-            // lifted along n: w = Q + t n, t = sin^2 a (1 − r^2) / (Q_z + sqrt(Q_z^2 + sin^2 a (1 − r^2)))
-            const detail::ConcentricSigned<T> d = detail::concentric_to_disk_signed(uc);
-            // (cos, sin) of the angle in [−pi/4, 3pi/4]: of |angle| up to pi/2, of angle − pi/2 beyond
-            const bool high = d.angle > detail::half_pi_v<T>;
-            const detail::SinCosValues<T> v = detail::sin_cos_of_angle(high ? d.angle - detail::half_pi_v<T> : std::fabs(d.angle));
-            const T ca = high ? -v.s : v.c, sa = high ? v.c : std::copysign(v.s, d.angle);
-            const T dx = d.radius * ca, dy = d.radius * sa;
-            const T r = std::fabs(d.radius);
-            const T rest = sa_ * sa_ * ((T(1) - r) * (T(1) + r));
-            const T qz = detail::max_of(ca_ * cg_ - sa_ * sg_ * dx, T(0));
-            const T den = qz + std::sqrt(qz * qz + rest);
-            const T t = den > T(0) ? rest / den : T(0);
-            const T z = qz + t;
-            const T p = sa_ * dx - t * sg_, q = sa_ * dy, s = ca_ + t * cg_;
-            const vec3 w = p * e1_ + q * e2_ + s * c_;
-            return inside(w, z > T(0) ? z * inv_area_ : T(0), surely_inside(p, q, s, z));
+            const Above a = sample_above(uc);
+            return inside(a.w, a.pd, a.sure);
         }
         return sample_cut(uc);
+    }
+
+    /// sample(u) placed on a sphere by `target` (SphereLight's detail::SphereTarget): above the
+    /// horizon, where the sample is surely inside the cap, from its polar angle in closed form
+    /// (cos theta = s and cos theta − cos a = t cos g, a product: no cancellation at the rim);
+    /// otherwise from the direction.
+    template <class Target>
+    APSE_HOT_INLINE PointSample<T> sample_on_sphere(const vec2& u, const Target& target) const noexcept {
+        bool ok = !empty_;
+        const vec2 uc = detail::clamp_unit(u, ok);
+        if (ok && !cut_) {
+            const Above a = sample_above(uc);
+            if (a.sure) return target.place_polar({{a.w, a.pd}, a.cos_theta, a.rim_gap}, ca_);
+            return target.place_by_ray(inside(a.w, a.pd, false));
+        }
+        return target.place_by_ray(ok ? sample_cut(uc) : DirectionSample<T>{c_, T(0)});
     }
 
     /// Density of sample() at the world-space direction `d` (any non-zero length), in solid
@@ -301,6 +302,36 @@ public:
     }
 
 private:
+    /// A sample above the horizon before inside(): the direction, its density, whether it is
+    /// surely inside the cap (surely_inside), cos theta (theta its angle from the cap's centre)
+    /// and cos theta − cos a.
+    struct Above {
+        vec3 w;
+        T pd;
+        bool sure;
+        T cos_theta, rim_gap;
+    };
+
+    /// sample() above the horizon (uc clamped, the sampler not empty, not cut): the concentric
+    /// map's disk point (dx, dy), its flat-disk point Q = cos a c + sin a (dx e1 + dy e2), lifted
+    /// along n: w = Q + t n, t = sin^2 a (1 − r^2) / (Q_z + sqrt(Q_z^2 + sin^2 a (1 − r^2))).
+    APSE_HOT_INLINE Above sample_above(const vec2& uc) const noexcept {
+        const detail::ConcentricSigned<T> d = detail::concentric_to_disk_signed(uc);
+        // (cos, sin) of the angle in [−pi/4, 3pi/4]: of |angle| up to pi/2, of angle − pi/2 beyond
+        const bool high = d.angle > detail::half_pi_v<T>;
+        const detail::SinCosValues<T> v = detail::sin_cos_of_angle(high ? d.angle - detail::half_pi_v<T> : std::fabs(d.angle));
+        const T ca = high ? -v.s : v.c, sa = high ? v.c : std::copysign(v.s, d.angle);
+        const T dx = d.radius * ca, dy = d.radius * sa;
+        const T r = std::fabs(d.radius);
+        const T rest = sa_ * sa_ * ((T(1) - r) * (T(1) + r));
+        const T qz = detail::max_of(ca_ * cg_ - sa_ * sg_ * dx, T(0));
+        const T den = qz + std::sqrt(qz * qz + rest);
+        const T t = den > T(0) ? rest / den : T(0);
+        const T z = qz + t;
+        const T p = sa_ * dx - t * sg_, q = sa_ * dy, s = ca_ + t * cg_;
+        return {p * e1_ + q * e2_ + s * c_, z > T(0) ? z * inv_area_ : T(0), surely_inside(p, q, s, z), s, t * cg_};
+    }
+
     /// sample() where the horizon cuts the cap (uc clamped, the sampler not empty): u1 → y by
     /// inverting the visible region's cumulative area, then x = x_lo + u2 L (file comment). Out
     /// of line from sample(): its root finding would otherwise be compiled into every caller.

@@ -188,6 +188,13 @@ public:
         return visit([&u](const auto& s) { return s.sample(u); });
     }
 
+    /// The chosen sampler's sample(u) placed on a sphere by `target.sample(sampler, u)`
+    /// (SphereLight: detail::SphereTarget), the same as with the chosen sampler's own type.
+    template <class Target>
+    APSE_NOINLINE APSE_FUNC PointSample<T> sample_on_sphere(const vec2& u, const Target& target) const noexcept {
+        return visit([&](const auto& s) { return target.sample(s, u); });
+    }
+
     /// The chosen sampler's pdf(d).
     APSE_NOINLINE APSE_FUNC T pdf(const vec3& d) const noexcept {
         return visit([&d](const auto& s) { return s.pdf(d); });

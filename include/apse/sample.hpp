@@ -36,6 +36,16 @@ template <class T> struct PointSample : DirectionSample<T> {
 
 namespace detail {
 
+/// A direction sampled on a spherical cap with its polar position (CapMap::sample_polar,
+/// ProjectedCapSampler above the horizon): cos theta of its angle theta from the cap's centre
+/// direction and the gap cos theta − cos alpha >= 0 to the rim, given without cancellation; a
+/// sphere light finds the shadow ray's length from them in closed form (SphereLight).
+template <class T> struct CapPolarSample {
+    DirectionSample<T> sample;  ///< the direction and its pdf
+    T cos_theta;                ///< cos theta
+    T rim_gap;                  ///< cos theta − cos alpha
+};
+
 /// point_on_plane for the plane {p : (p − o)·plane_normal = height}: the shadow-ray data a light
 /// stores per shading point (DiskLight), height = (plane_point − o)·plane_normal computed once.
 template <class T>

@@ -23,6 +23,8 @@
 /// exactly ∝ max(0, n_r·ω) over the cap (ProjectedCapSampler).
 
 #include <cmath>
+#include <type_traits>
+#include <utility>
 
 #include "config.hpp"
 #include "detail/math.hpp"
@@ -56,6 +58,78 @@ APSE_HOT_INLINE T sphere_hit_distance(const glm::vec<3, T>& p, T r, T inv_r, T d
     const T t = (dist - r) * ((dist + r) / (b + root));
     return t > T(0) && is_finite(t) ? t : T(0);
 }
+
+/// The distance t from a shading point to the nearest point of a sphere along a direction at
+/// angle theta from the sphere's centre direction, for a direction inside the cap the sphere
+/// subtends (half-angle alpha, |center − o| = dist): t = dist cos theta − dist sqrt(sin^2 alpha −
+/// sin^2 theta), written t = dist cos^2 alpha / (cos theta + sqrt((cos theta − cos alpha)
+/// (cos theta + cos alpha))) so that nothing cancels (near the centre direction, near the rim,
+/// for far spheres and near ones): dist_cos2 = dist cos^2 alpha and rim_gap = cos theta −
+/// cos alpha >= 0 are given without cancellation (CapMap::sample_polar). The rim gives
+/// dist cos alpha (the tangent's length), the centre dist − radius.
+template <class T> APSE_HOT_INLINE T sphere_distance_at_polar(T dist_cos2, T cos_alpha, T cos_theta, T rim_gap) noexcept {
+    return dist_cos2 / (cos_theta + std::sqrt(rim_gap * (cos_theta + cos_alpha)));
+}
+
+/// True if the sampler S gives sample_polar(u) (CapMap: the radial maps on a cap).
+template <class S, class = void> struct samples_polar : std::false_type {};
+template <class S>
+struct samples_polar<S, std::void_t<decltype(std::declval<const S&>().sample_polar(std::declval<const typename S::vec2&>()))>>
+    : std::true_type {};
+
+/// True if the sampler S places its samples on a sphere itself: S::sample_on_sphere(u, target)
+/// (RuntimeSampler's cap sampler: the chosen sampler's way).
+template <class S, class Target, class = void> struct samples_on_sphere : std::false_type {};
+template <class S, class Target>
+struct samples_on_sphere<S, Target,
+                         std::void_t<decltype(std::declval<const S&>().sample_on_sphere(
+                             std::declval<const typename S::vec2&>(), std::declval<const Target&>()))>>
+    : std::true_type {};
+
+/// The sphere of a SphereLight seen from its shading point o (outside it): places a sampler's
+/// directions on it, with the nearest point along each and its distance (the shadow ray).
+template <class T> struct SphereTarget {
+    glm::vec<3, T> o;       ///< the shading point
+    glm::vec<3, T> center;  ///< the sphere's centre
+    T radius;               ///< its radius, > 0
+    T inv_radius;           ///< 1 / radius
+    T dist;                 ///< |center − o| > radius
+
+    /// sampler.sample(u) (a sampler of the cap this sphere subtends at o) with the nearest point
+    /// of the sphere along the direction and its distance: in closed form from the sample's polar
+    /// angle for the samplers that give it (sample_polar, or sample_on_sphere where only some of
+    /// their samples have it), from the direction for the others. pdf 0 ("no sample", point o,
+    /// distance 0) where the sampler gives pdf 0 or the point overflows T.
+    template <class S> APSE_HOT_INLINE PointSample<T> sample(const S& sampler, const glm::vec<2, T>& u) const noexcept {
+        if constexpr (samples_on_sphere<S, SphereTarget>::value) return sampler.sample_on_sphere(u, *this);
+        else if constexpr (samples_polar<S>::value) return place_polar(sampler.sample_polar(u), sampler.ellipse().cos_alpha);
+        else return place_by_ray(sampler.sample(u));
+    }
+
+    /// The sample s of the sphere's cap (half-angle alpha) placed on the sphere from its polar
+    /// angle: distance by sphere_distance_at_polar.
+    APSE_HOT_INLINE PointSample<T> place_polar(const CapPolarSample<T>& s, T cos_alpha) const noexcept {
+        return place(s.sample, sphere_distance_at_polar(dist * cos_alpha * cos_alpha, cos_alpha, s.cos_theta, s.rim_gap));
+    }
+
+    /// The sample s placed on the sphere by intersecting its ray (sphere_hit_distance).
+    APSE_HOT_INLINE PointSample<T> place_by_ray(const DirectionSample<T>& s) const noexcept {
+        return place(s, s.pdf > T(0) ? sphere_hit_distance(center - o, radius, inv_radius, dist, s.direction) : T(0));
+    }
+
+    /// The sample s placed at distance t along its direction (pdf 0 kept, and given for t <= 0 or
+    /// a point that overflows T).
+    APSE_HOT_INLINE PointSample<T> place(const DirectionSample<T>& s, T t) const noexcept {
+        PointSample<T> r{{s.direction, T(0)}, o, T(0)};
+        if (!(s.pdf > T(0))) return r;
+        const glm::vec<3, T> p = o + t * s.direction;
+        if (!(t > T(0)) || !is_finite(p.x + p.y + p.z)) return r;
+        r.pdf = s.pdf;
+        r.point = p;
+        r.distance = t;
+        return r;
+    }
+};
 
 /// |v| without overflow or underflow of the squares: sqrt(v·v) where the largest component is
 /// within [safe_scale_min, safe_scale_max] (the squares then keep their digits), v scaled by its
@@ -97,8 +171,7 @@ public:
     template <class... SamplerArgs>
     APSE_HOT_INLINE SphereLight(const vec3& o, const vec3& center, detail::type_identity_t<T> radius,
                           const SamplerArgs&... sampler_args) noexcept
-        : o_(o), center_(center), radius_(radius), inv_radius_(T(1) / radius),
-          dist_(detail::robust_length(center - o)),
+        : sphere_{o, center, radius, T(1) / radius, detail::robust_length(center - o)},
           sampler_(project_sphere(o, center, radius), sampler_args...) {}
 
     /// The sampler's type: what `Sampler` does on a cap (the class comment).
@@ -125,21 +198,13 @@ public:
     APSE_FUNC bool cosine_weighted() const noexcept { return detail::weighted_of(sampler_, 0); }
 
     /// Sample for the point u of the unit square (clamped into [0, 1]^2; NaN → pdf 0): the
-    /// direction, the nearest point of the sphere along it (detail::sphere_hit_distance), its
-    /// distance and the sampler's pdf (solid angle). pdf 0 ("no sample", point o, distance 0,
-    /// the direction finite) for an empty light, a NaN u, or a hit point that overflows T.
-    APSE_HOT_INLINE PointSample<T> sample(const vec2& u) const noexcept {
-        const DirectionSample<T> s = sampler_.sample(u);
-        PointSample<T> r{{s.direction, T(0)}, o_, T(0)};
-        if (!(s.pdf > T(0))) return r;
-        const T t = detail::sphere_hit_distance(center_ - o_, radius_, inv_radius_, dist_, s.direction);
-        const vec3 p = o_ + t * s.direction;
-        if (!(t > T(0)) || !detail::is_finite(p.x + p.y + p.z)) return r;
-        r.pdf = s.pdf;
-        r.point = p;
-        r.distance = t;
-        return r;
-    }
+    /// direction, the nearest point of the sphere along it, its distance and the sampler's pdf
+    /// (solid angle). The distance comes in closed form from the sample's polar angle for the
+    /// radial maps (detail::sphere_distance_at_polar: accurate to a few ulps up to the rim), from
+    /// the direction for the others (detail::sphere_hit_distance). pdf 0 ("no sample", point o,
+    /// distance 0, the direction finite) for an empty light, a NaN u, or a hit point that
+    /// overflows T.
+    APSE_HOT_INLINE PointSample<T> sample(const vec2& u) const noexcept { return sphere_.sample(sampler_, u); }
 
     /// Density of sample() at the world-space direction `w` (any non-zero length), in solid
     /// angle: the sampler's pdf (0 outside the cap, i.e. for rays that miss the sphere).
@@ -149,10 +214,7 @@ public:
     APSE_FUNC vec2 invert(const vec3& w) const noexcept { return sampler_.invert(w); }
 
 private:
-    vec3 o_, center_;
-    T radius_;
-    T inv_radius_;  ///< 1 / radius, for the hit distance
-    T dist_;        ///< |center − o|, for the hit distance
+    detail::SphereTarget<T> sphere_;  ///< the shading point, the sphere and its distance
     CapSampler sampler_;
 };
 

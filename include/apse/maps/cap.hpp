@@ -103,15 +103,24 @@ public:
 
     /// Direction for the point u of the unit square (clamped into [0, 1]^2): the map's sample,
     /// pdf 1/Omega; a NaN coordinate or empty(): pdf 0 and the centre direction.
-    APSE_HOT_INLINE DirectionSample<T> sample(const vec2& u) const noexcept {
+    APSE_HOT_INLINE DirectionSample<T> sample(const vec2& u) const noexcept { return sample_polar(u).sample; }
+
+    /// sample(u) with the polar angle theta of its direction from the cap's centre direction:
+    /// cos theta and cos theta − cos alpha = (1 − u2)(1 − cos alpha) >= 0 (u2 the radial
+    /// fraction), the gap to the rim without cancellation. SphereLight places the sample on its
+    /// sphere from them in closed form (detail::SphereTarget). For pdf 0: cos theta 1, gap 0.
+    APSE_HOT_INLINE CapPolarSample<T> sample_polar(const vec2& u) const noexcept {
         bool ok = inv_omega_ > T(0);
         const vec2 uc = clamp_unit(u, ok);
-        if (!ok) return {cap_.z, T(0)};
+        if (!ok) return {{cap_.z, T(0)}, T(1), T(0)};
+        const T omc = cap_.one_minus_cos_alpha;
         if constexpr (Ld) {
             const ConcentricFold<T> disk = concentric_fold(uc);
-            return {cap_.to_world(cap_direction(disk.fold, cap_.one_minus_cos_alpha, disk.radius2)), inv_omega_};
+            return {{cap_.to_world(cap_direction(disk.fold, omc, disk.radius2)), inv_omega_},
+                    T(1) - disk.radius2 * omc, (T(1) - disk.radius2) * omc};
         } else {
-            return {cap_.to_world(cap_direction(fold_quadrant(uc.x), cap_.one_minus_cos_alpha, uc.y)), inv_omega_};
+            return {{cap_.to_world(cap_direction(fold_quadrant(uc.x), omc, uc.y)), inv_omega_}, T(1) - uc.y * omc,
+                    (T(1) - uc.y) * omc};
         }
     }
 
