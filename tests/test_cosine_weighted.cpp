@@ -102,18 +102,29 @@ struct LightCells {
     template <class F> std::vector<double> integrals(int n, F&& f, int split = 1) const {
         apse_test::GaussLegendre gl(n);
         std::vector<double> out(count());
+        std::vector<long double> cos_ang(n), sin_ang(n);
         for (int i = 0; i < rings; ++i) {
             const long double r0 = std::sqrt((long double)i / rings), r1 = std::sqrt((long double)(i + 1) / rings);
             for (int j = 0; j < sectors; ++j) {
                 const long double a0 = 2 * kPi * j / sectors, a1 = 2 * kPi * (j + 1) / sectors;
                 auto cell_piece = [&](long double lo, long double hi, long double b0, long double b1) {
+                    // the inner rule over the angle (GaussLegendre::integrate's nodes and sum, in
+                    // its order) with the nodes' cosines and sines computed once for every rho
+                    const long double h = (b1 - b0) / 2, m = (b0 + b1) / 2;
+                    for (int k = 0; k < n; ++k) {
+                        const long double ang = m + h * gl.x[std::size_t(k)];
+                        cos_ang[std::size_t(k)] = std::cos(ang);
+                        sin_ang[std::size_t(k)] = std::sin(ang);
+                    }
                     return gl.integrate([&](long double rho) {
-                        return gl.integrate([&](long double ang) {
-                            const long double x = c.h + c.ra * rho * std::cos(ang), y = c.rb * rho * std::sin(ang);
+                        long double sum = 0;
+                        for (std::size_t k = 0; k < gl.x.size(); ++k) {
+                            const long double x = c.h + c.ra * rho * cos_ang[k], y = c.rb * rho * sin_ang[k];
                             const long double q = x * x + y * y + (long double)c.d * c.d, len = std::sqrt(q);
                             const glm::dvec3 w(double(x / len), double(y / len), double(c.d / len));
-                            return c.ra * c.rb * rho * c.d / (q * len) * (long double)f(w);
-                        }, b0, b1);
+                            sum += gl.w[k] * (c.ra * c.rb * rho * c.d / (q * len) * (long double)f(w));
+                        }
+                        return sum * h;
                     }, lo, hi);
                 };
                 auto piece = [&](long double lo, long double hi) {

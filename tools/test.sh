@@ -14,13 +14,13 @@
 #                 the Doxygen API reference (warnings are errors), benchmark smoke runs
 #     sanitize  : g++ Debug, AddressSanitizer + UndefinedBehaviorSanitizer: unit tests, fuzz
 #                 replays, examples
-#     clang     : clang++ Release: unit tests, fuzz replays, libFuzzer runs from the corpora (105 s)
+#     clang     : clang++ Release against Catch2 3, built from Debian's source package by
+#                 tools/catch2_v3.sh (Debian 12 ships Catch2 2): unit and statistical tests,
+#                 fuzz replays, libFuzzer runs from the corpora (105 s)
 #     fastmath  : g++ -O3 -ffast-math -fno-finite-math-only: robustness (except denormal
 #                 arguments, flushed to zero), statistics, cosine-weighted, fuzz replays
 #     fma-nosimd: g++ -march=x86-64-v3 (FMA contraction) with APSE_NO_SIMD (the scalar pairs):
 #                 unit tests, fuzz replays
-#     catch2-v3 : g++ Release against Catch2 3, built from Debian's source package by
-#                 tools/catch2_v3.sh (Debian 12 ships Catch2 2): unit and statistical tests
 #     aarch64   : g++-aarch64-linux-gnu cross build run under qemu-user: unit tests, fuzz replays
 # Prints configure / build / test seconds per configuration and ends with "N passed, N failed"
 # over all of them; exits non-zero on any failure. APSE_JOBS sets the parallelism (default 2).
@@ -86,12 +86,11 @@ else
   run_preset release
   cat build/release/mitsuba3/skipped.txt 2>/dev/null || true  # why the Mitsuba 3 tests were skipped
   run_preset sanitize
-  run_preset clang
-  run_preset fastmath
   t=$(date +%s)
   bash tools/catch2_v3.sh
   summary+=("$(printf '%-10s built from source in %d s (tools/catch2_v3.sh)' "Catch2 3" $(( $(date +%s) - t )))")
-  run_preset catch2-v3
+  run_preset clang
+  run_preset fastmath
   if grep -qw avx2 /proc/cpuinfo && grep -qw fma /proc/cpuinfo; then
     run_preset fma-nosimd
   else
