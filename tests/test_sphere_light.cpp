@@ -26,7 +26,7 @@ template <class T> using Vec2 = glm::vec<2, T>;
 template <class T> using Vec3 = glm::vec<3, T>;
 
 // Passed to GPU kernels by value: plain data, holding the chosen sampler's cap form and the
-// shadow-ray data (shading point, centre, radius, 1/radius, distance) only — smaller than the map.
+// shadow-ray data (shading point, centre, radius, distance, distance cos² alpha) only — smaller than the map.
 template <class T> constexpr bool sized_by_its_map() {
     using Map = apse::TabulatedLdRadialMap<T>;
     using Cap = typename Map::CapSampler;

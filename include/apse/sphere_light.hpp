@@ -92,8 +92,15 @@ template <class T> struct SphereTarget {
     glm::vec<3, T> o;       ///< the shading point
     glm::vec<3, T> center;  ///< the sphere's centre
     T radius;               ///< its radius, > 0
-    T inv_radius;           ///< 1 / radius
     T dist;                 ///< |center − o| > radius
+    T dist_cos2;            ///< dist cos^2 alpha (alpha the cap's half-angle): dist_cos2_of
+
+    /// dist cos^2 alpha = radius cos^2 alpha / sin alpha from the sphere's cap (project_sphere's
+    /// scale-free sine and cosine: no overflow for far or huge spheres, a few ulps); 0 for an
+    /// empty cap.
+    static APSE_HOT_INLINE T dist_cos2_of(const SphericalEllipse<T>& cap, T radius) noexcept {
+        return cap.sin_alpha > T(0) ? radius * (cap.cos_alpha * (cap.cos_alpha / cap.sin_alpha)) : T(0);
+    }
 
     /// sampler.sample(u) (a sampler of the cap this sphere subtends at o) with the nearest point
     /// of the sphere along the direction and its distance: in closed form from the sample's polar
@@ -109,12 +116,12 @@ template <class T> struct SphereTarget {
     /// The sample s of the sphere's cap (half-angle alpha) placed on the sphere from its polar
     /// angle: distance by sphere_distance_at_polar.
     APSE_HOT_INLINE PointSample<T> place_polar(const CapPolarSample<T>& s, T cos_alpha) const noexcept {
-        return place(s.sample, sphere_distance_at_polar(dist * cos_alpha * cos_alpha, cos_alpha, s.cos_theta, s.rim_gap));
+        return place(s.sample, sphere_distance_at_polar(dist_cos2, cos_alpha, s.cos_theta, s.rim_gap));
     }
 
     /// The sample s placed on the sphere by intersecting its ray (sphere_hit_distance).
     APSE_HOT_INLINE PointSample<T> place_by_ray(const DirectionSample<T>& s) const noexcept {
-        return place(s, s.pdf > T(0) ? sphere_hit_distance(center - o, radius, inv_radius, dist, s.direction) : T(0));
+        return place(s, s.pdf > T(0) ? sphere_hit_distance(center - o, radius, T(1) / radius, dist, s.direction) : T(0));
     }
 
     /// The sample s placed at distance t along its direction (pdf 0 kept, and given for t <= 0 or
@@ -153,7 +160,8 @@ template <class T> APSE_HOT_INLINE T robust_length(const glm::vec<3, T>& v) noex
 /// holds `Sampler::CapSampler`, what the sampler does on a cap and nothing else: the radial
 /// maps' closed forms without their general-ellipse paths and tables (maps/cap.hpp), the
 /// cosine-weighted ones as ProjectedCapSampler alone; ParallelMap as it is. Holds the shading
-/// point, the centre, the radius, two distances and that sampler only; trivially copyable.
+/// point, the centre, the radius, its distance D and D cos^2 alpha (the shadow ray's closed form)
+/// and that sampler only; trivially copyable.
 ///
 /// Defined behaviour on every input: a shading point inside or on the sphere (which sees the
 /// emitter in every direction, not a cap), a zero, negative or NaN radius, NaN or infinite
@@ -171,8 +179,7 @@ public:
     template <class... SamplerArgs>
     APSE_HOT_INLINE SphereLight(const vec3& o, const vec3& center, detail::type_identity_t<T> radius,
                           const SamplerArgs&... sampler_args) noexcept
-        : sphere_{o, center, radius, T(1) / radius, detail::robust_length(center - o)},
-          sampler_(project_sphere(o, center, radius), sampler_args...) {}
+        : SphereLight(FromCap{}, project_sphere(o, center, radius), o, center, radius, sampler_args...) {}
 
     /// The sampler's type: what `Sampler` does on a cap (the class comment).
     using CapSampler = typename Sampler::CapSampler;
@@ -214,6 +221,13 @@ public:
     APSE_FUNC vec2 invert(const vec3& w) const noexcept { return sampler_.invert(w); }
 
 private:
+    struct FromCap {};
+    template <class... SamplerArgs>
+    APSE_HOT_INLINE SphereLight(FromCap, const SphericalEllipse<T>& cap, const vec3& o, const vec3& center, T radius,
+                                const SamplerArgs&... sampler_args) noexcept
+        : sphere_{o, center, radius, detail::robust_length(center - o), detail::SphereTarget<T>::dist_cos2_of(cap, radius)},
+          sampler_(cap, sampler_args...) {}
+
     detail::SphereTarget<T> sphere_;  ///< the shading point, the sphere and its distance
     CapSampler sampler_;
 };

@@ -17,6 +17,7 @@
 #include "fuzz_common.hpp"
 
 #include <cstdint>
+#include <limits>
 
 namespace {
 
@@ -52,9 +53,14 @@ void check_light(const glm::vec<3, T>& o, const glm::vec<3, T>& c, T r, const gl
     if (std::fabs(glm::length(w) - 1) > 64 * eps) fail("direction not unit");
     if (!(s.distance > T(0)) || !apse::detail::is_finite(s.distance) || !apse_fuzz::finite3(s.point))
         fail("bad point or distance");
-    // every coordinate's scale: the rounding of o, c and the point is relative to it
+    // every coordinate's scale: the rounding of o, c and the point is relative to it, and at
+    // least T's subnormal spacing: a sphere whose coordinates, radius or distance are subnormal
+    // (or round to the subnormals in a product) gets its point and distance on that grid, each
+    // operation within half a spacing (`floor`: 16 spacings cover the few operations of the point,
+    // of the distance and of the check)
     const L scale = std::fmax(glm::length(od), glm::length(cd)) + L(r) + L(s.distance);
-    if (glm::length(p - (od + L(s.distance) * w)) > 64 * eps * scale) fail("point is not o + distance * direction");
+    const L floor = 16 * L(std::numeric_limits<T>::denorm_min());
+    if (glm::length(p - (od + L(s.distance) * w)) > 64 * eps * scale + floor) fail("point is not o + distance * direction");
     // on the sphere, up to the rounding of the direction (its angular error times the distance)
     // and of the cap itself: the light computes |c − o| = D to within ~2 eps D (the rounding of
     // c − o is relative to the difference, then a dot product and a square root), allowed as
@@ -68,7 +74,7 @@ void check_light(const glm::vec<3, T>& o, const glm::vec<3, T>& c, T r, const gl
     const L dc = glm::length(cd - od), rl = L(r), dd = 4 * eps * dc;
     const bool side_known = dc - dd > rl;
     const L tangent = side_known ? std::sqrt((dc - dd - rl) * (dc - dd + rl)) : L(0);
-    const L tol = 256 * eps * scale;
+    const L tol = 256 * eps * scale + floor;
     if (std::fabs(glm::length(p - cd) - rl) > tol) fail("point not on the sphere");
     if (side_known && glm::dot(p - cd, w) > tol + 8 * eps * rl * rl / tangent) fail("point on the far side of the sphere");
     if (horizon) {
