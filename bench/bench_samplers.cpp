@@ -272,6 +272,11 @@ template <class Factory, class T> void bm_setup(benchmark::State& state) {
     }
 }
 
+/// True for a light's samples (apse::PointSample: direction, pdf, point and distance), whose
+/// point and distance the timed loop consumes too (otherwise the compiler drops their work).
+template <class S, class = void> struct has_point : std::false_type {};
+template <class S> struct has_point<S, std::void_t<decltype(std::declval<S&>().distance)>> : std::true_type {};
+
 /// One fresh shading point per benchmark iteration: build the sampler, draw `Samples` samples.
 template <class Factory, class T, int Samples> void bm_sampler(benchmark::State& state) {
     const DiskConfigs<T>& s = apse_bench::disk_configs<T>();
@@ -291,6 +296,7 @@ template <class Factory, class T, int Samples> void bm_sampler(benchmark::State&
             iterations += diag.iterations;
             accepted += smp.pdf > T(0);
             acc += smp.direction.x + smp.pdf;
+            if constexpr (has_point<decltype(smp)>::value) acc += smp.distance + smp.point.x;  // a light's shadow ray
         }
         benchmark::DoNotOptimize(acc);
     }
