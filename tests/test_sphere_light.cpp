@@ -77,6 +77,25 @@ long double hit_reference(const glm::dvec3& o, const glm::dvec3& c, double r, co
     return (d2 - (long double)r * r) / (b + std::sqrt(std::max(disc, 0.0L)));
 }
 
+/// The geometry of one light sample s with pdf > 0 drawn from o towards the sphere (c, r): a
+/// unit direction inside the cap (to rounding of the direction: a few eps in angle), the nearest
+/// point of the sphere along it at the reference distance, and that point o + t w, on the sphere
+/// and on the side facing o. Distance: T's rounding of o, c and the direction is amplified near
+/// the surface by dist / (dist - r) (the hit distance is ~dist - r there); 64 eps of that covers
+/// every operation of the computation.
+template <class S, class T> void check_point_geometry(const S& s, const Vec3<T>& o, const Vec3<T>& c, T r) {
+    const glm::dvec3 od(o), cd(c), w(s.direction), p(s.point);
+    const double dist = glm::length(cd - od), eps = double(apse::epsilon<T>());
+    const long double alpha = std::asin((long double)r / dist);
+    CHECK(std::fabs(glm::length(w) - 1) <= 8 * eps);
+    CHECK(angle_from(w, cd - od) <= alpha * (1 + 16 * eps) + 16 * eps);
+    const long double t_ref = hit_reference(od, cd, double(r), w);
+    CHECK(std::fabs(s.distance - t_ref) <= 64 * eps * (1 + dist / (dist - r)) * t_ref);
+    CHECK(glm::length(p - (od + double(s.distance) * w)) <= 16 * eps * (glm::length(od) + s.distance));
+    CHECK(std::fabs(glm::length(p - cd) - r) <= 64 * eps * (r + glm::length(cd) + dist));
+    CHECK(glm::dot(p - cd, w) <= 64 * eps * (r + glm::length(cd) + dist));
+}
+
 /// Every sample of `light`: a unit direction inside the cap, its nearest point on the sphere at
 /// the reference distance, pdf(direction) and the stateless pdf equal to the sample's pdf.
 template <class Sampler, class T>
@@ -86,27 +105,14 @@ void check_points(const Vec3<T>& o, const Vec3<T>& c, T r, int n, apse_test::Rng
     const glm::dvec3 od(o), cd(c);
     const double dist = glm::length(cd - od), eps = double(apse::epsilon<T>());
     const long double alpha = std::asin((long double)r / dist);
-    // Distance: T's rounding of o, c and the direction is amplified near the surface by
-    // dist / (dist - r) (the hit distance is ~dist - r there); 64 eps of that covers every
-    // operation of the computation.
-    const double tol_t = 64 * eps * (1 + dist / (dist - r));
     int rim_misses = 0;
     for (int i = 0; i < n; ++i) {
         const Vec2<T> u(rng.uniform<T>(), rng.uniform<T>());
         const auto s = light.sample(u);
         INFO("u = (" << u.x << ", " << u.y << "), dist/r = " << dist / r);
         REQUIRE(s.pdf > T(0));
+        check_point_geometry(s, o, c, r);
         const glm::dvec3 w(s.direction);
-        CHECK(std::fabs(glm::length(w) - 1) <= 8 * eps);
-        // inside the cap, to rounding of the direction (a few eps in angle)
-        CHECK(angle_from(w, cd - od) <= alpha * (1 + 16 * eps) + 16 * eps);
-        const long double t_ref = hit_reference(od, cd, double(r), w);
-        CHECK(std::fabs(s.distance - t_ref) <= tol_t * t_ref);
-        // the point is o + t w, on the sphere, on the side facing o
-        const glm::dvec3 p(s.point);
-        CHECK(glm::length(p - (od + double(s.distance) * w)) <= 16 * eps * (glm::length(od) + s.distance));
-        CHECK(std::fabs(glm::length(p - cd) - r) <= 64 * eps * (r + glm::length(cd) + dist));
-        CHECK(glm::dot(p - cd, w) <= 64 * eps * (r + glm::length(cd) + dist));
         // the density of that direction: the sample's own (0 only on the rim, from rounding)
         const T p_light = light.pdf(s.direction);
         if (p_light == T(0)) {
@@ -134,7 +140,6 @@ int check_cosine_points(const Light& light, const Vec3<T>& o, const Vec3<T>& c, 
     const glm::dvec3 od(o), cd(c), nd = glm::normalize(glm::dvec3(n_r));
     const double dist = glm::length(cd - od), eps = double(apse::epsilon<T>());
     const long double alpha = std::asin((long double)r / dist);
-    const double tol_t = 64 * eps * (1 + dist / (dist - r));
     int accepted = 0;
     for (int i = 0; i < n; ++i) {
         const Vec2<T> u(rng.uniform<T>(), rng.uniform<T>());
@@ -143,16 +148,9 @@ int check_cosine_points(const Light& light, const Vec3<T>& o, const Vec3<T>& c, 
         REQUIRE(s.pdf >= T(0));
         if (s.pdf == T(0)) continue;
         ++accepted;
+        check_point_geometry(s, o, c, r);
         const glm::dvec3 w(s.direction);
-        CHECK(std::fabs(glm::length(w) - 1) <= 8 * eps);
         CHECK(glm::dot(w, nd) > 0);
-        CHECK(angle_from(w, cd - od) <= alpha * (1 + 16 * eps) + 16 * eps);
-        const long double t_ref = hit_reference(od, cd, double(r), w);
-        CHECK(std::fabs(s.distance - t_ref) <= tol_t * t_ref);
-        const glm::dvec3 p(s.point);
-        CHECK(glm::length(p - (od + double(s.distance) * w)) <= 16 * eps * (glm::length(od) + s.distance));
-        CHECK(std::fabs(glm::length(p - cd) - r) <= 64 * eps * (r + glm::length(cd) + dist));
-        CHECK(glm::dot(p - cd, w) <= 64 * eps * (r + glm::length(cd) + dist));
         const T p_light = light.pdf(s.direction);
         const double height = glm::dot(w, nd);
         if (p_light != T(0)) CHECK(std::fabs(double(p_light) - double(s.pdf)) <= 64 * eps * (1 + 1 / height) * double(s.pdf));
