@@ -81,10 +81,9 @@ template <bool Precise, class T> APSE_FUNC T asin_minus_identity(T y, T w) noexc
 /// at both ends), then bracketed Halley steps (polynomial sine and cosine, one square root and
 /// two divisions each; 2.1 evaluations per sample on average in double, 1.3 in float, measured
 /// over random cut caps), stopped relative to the area inverted (never a fixed absolute
-/// tolerance) with a hard cap of 40 steps. Measured cost (docs/speed.md, sphere lights): through
-/// SphereLight<CosineWeighted<map>>, which builds this sampler alone, set-up + 1 sample ~3.3× pbrt's
-/// cone sampling above the horizon and ~9× when cut, most of the latter in the area's
-/// evaluations. The samples are continuous in u within each case; where the horizon starts
+/// tolerance) with a hard cap of 40 steps. Measured cost against pbrt's cone sampling: docs/speed.md,
+/// sphere lights (SphereLight<CosineWeighted<map>> builds this sampler alone); when cut, most of it
+/// is the area's evaluations. The samples are continuous in u within each case; where the horizon starts
 /// to cut the cap the map changes from the disk's to the strips' (Omega_perp and the density
 /// are continuous there, the map of u is not). Every finite normal, however large or small its
 /// components (subnormal, or cos g or sin g 0 or subnormal), gives finite unit directions and a
