@@ -78,16 +78,18 @@ public:
     using vec3 = typename Plain::vec3;       ///< a 3-D vector (direction, point or normal)
     using T = typename vec3::value_type;     ///< float or double
 
-    /// The sampler of `cap` for the receiver normal `normal` (the exact maps and ParallelMap).
-    template <class P = Plain, std::enable_if_t<std::is_constructible<P, const SphericalEllipse<T>&>::value, int> = 0>
-    APSE_HOT_INLINE CapCosine(const SphericalEllipse<T>& cap, const vec3& normal) noexcept {
+    /// The sampler of `cap` (a SphericalEllipse, or detail::SphereCap: a sphere's cap without its
+    /// frame, built only if the map's samples are used) for the receiver normal `normal` (the
+    /// exact maps and ParallelMap).
+    template <class Cap, class P = Plain, std::enable_if_t<std::is_constructible<P, const SphericalEllipse<T>&>::value, int> = 0>
+    APSE_HOT_INLINE CapCosine(const Cap& cap, const vec3& normal) noexcept {
         init(cap, nullptr, normal);
     }
 
     /// The same for the tabulated maps, with the table their map would be given.
-    template <class P = Plain,
+    template <class Cap, class P = Plain,
               std::enable_if_t<std::is_constructible<P, const SphericalEllipse<T>&, const TabulationView&>::value, int> = 0>
-    APSE_HOT_INLINE CapCosine(const SphericalEllipse<T>& cap, const TabulationView& table, const vec3& normal) noexcept {
+    APSE_HOT_INLINE CapCosine(const Cap& cap, const TabulationView& table, const vec3& normal) noexcept {
         init(cap, &table, normal);
     }
 
@@ -98,7 +100,7 @@ public:
     APSE_FUNC bool weighted() const noexcept { return mode_ == Mode::cap; }
 
     /// The cap sampled.
-    APSE_FUNC const SphericalEllipse<T>& ellipse() const noexcept {
+    APSE_FUNC SphericalEllipse<T> ellipse() const noexcept {
         return mode_ == Mode::cap ? u_.cap.ellipse() : u_.plain.ellipse();
     }
 
@@ -130,9 +132,7 @@ public:
     APSE_FUNC vec2 invert(const vec3& d) const noexcept {
         if (mode_ == Mode::plain) return u_.plain.invert(d);
         if (mode_ == Mode::empty) return vec2(T(0));
-        bool ok = true;
-        (void)normalize_direction(u_.cap.ellipse().to_local(d), ok);
-        return ok ? u_.cap.invert(d) : vec2(T(0));
+        return u_.cap.invert(d);
     }
 
 private:
@@ -140,7 +140,8 @@ private:
     enum class Mode : int { empty, plain, cap };
 
     /// CosineWeighted's choice on a cap: `table` is null for the maps built without one.
-    APSE_HOT_INLINE void init(const SphericalEllipse<T>& cap, const TabulationView* table, const vec3& normal) noexcept {
+    template <class Cap>
+    APSE_HOT_INLINE void init(const Cap& cap, const TabulationView* table, const vec3& normal) noexcept {
         mode_ = Mode::empty;
         const T scale = max_abs3(normal);
         const bool normal_ok = scale > T(0) && is_finite(scale) && finite3(normal);
@@ -152,9 +153,9 @@ private:
             }
         }
         if constexpr (std::is_constructible<Plain, const SphericalEllipse<T>&, const TabulationView&>::value) {
-            new (&u_.plain) Plain(cap, *table);
+            new (&u_.plain) Plain(ellipse_of(cap), *table);
         } else {
-            new (&u_.plain) Plain(cap);
+            new (&u_.plain) Plain(ellipse_of(cap));
         }
         if (!normal_ok && !u_.plain.empty()) mode_ = Mode::plain;
     }
@@ -162,7 +163,7 @@ private:
     /// Whether the map (Plain) can sample `cap`, without building it: a cap with a finite
     /// density 1/Omega and, for the tabulated maps, a usable table (the maps' own conditions on
     /// a cap).
-    static APSE_FUNC bool plain_can_sample(const SphericalEllipse<T>& cap, const TabulationView* table) noexcept {
+    template <class Cap> static APSE_HOT_INLINE bool plain_can_sample(const Cap& cap, const TabulationView* table) noexcept {
         return (!table || table_usable(*table)) && cap_density(cap) > T(0);
     }
 

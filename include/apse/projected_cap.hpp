@@ -106,54 +106,72 @@ public:
     /// angle so small (subnormal: a cap below ~1e-154 rad in double) that its reciprocal, the
     /// density's scale, overflows.
     APSE_HOT_INLINE ProjectedCapSampler(const SphericalEllipse<T>& cap, const vec3& receiver_normal) noexcept {
-        if (!cap.is_cap()) return;
+        if (cap.is_cap()) init(cap.z, cap.tan_alpha, cap.sin_alpha, cap.cos_alpha, cap.one_minus_cos_alpha, receiver_normal);
+    }
+
+    /// The same for the cap a sphere subtends (detail::sphere_cap: project_sphere without its
+    /// frame, which this sampler does not read): the samples, pdf and invert of the sampler built
+    /// from project_sphere's result, bit for bit.
+    APSE_HOT_INLINE ProjectedCapSampler(const SphereCap<T>& cap, const vec3& receiver_normal) noexcept {
+        if (!cap.empty()) init(cap.z, cap.tan_alpha, cap.sin_alpha, cap.cos_alpha, cap.one_minus_cos_alpha, receiver_normal);
+    }
+
+private:
+    /// The set-up for the cap (centre c, tan, sin, cos and 1 − cos of its angular radius a)
+    /// and the receiver normal (the constructors' contract). The receiver frame: g from
+    /// n·c, e1 from n's part across c, taken twice (Gram–Schmidt) so that it stays orthogonal to
+    /// c to rounding however close n is to ±c; e2 = c × e1.
+    APSE_HOT_INLINE void init(const vec3& c, T ta, T sa, T ca, T omca, const vec3& receiver_normal) noexcept {
         const T scale = detail::max_abs3(receiver_normal);
         if (!(scale > T(0)) || !detail::is_finite(scale) || !detail::finite3(receiver_normal)) return;
         // |n| from n itself where neither its square nor the products below overflow or lose
         // digits to underflow; otherwise n divided by its largest component first (a division:
         // its reciprocal may be subnormal)
         const vec3 v = scale >= T(1) / normal_range() && scale <= normal_range() ? receiver_normal : receiver_normal / scale;
-        const vec3 l = cap.to_local(v);
-        const T len = std::sqrt(glm::dot(v, v)), sl = std::sqrt(l.x * l.x + l.y * l.y);
+        const T vz = glm::dot(v, c);
+        vec3 across = v - vz * c;
+        across -= glm::dot(across, c) * c;
+        const T len = std::sqrt(glm::dot(v, v)), sl = std::sqrt(glm::dot(across, across));
         // sin g and e1 (the unit tangent at the centre pointing away from n, any one when n ∥ c;
-        // e2 = c × e1): 1/|n| and 1/|n_xy| from one division where the squares of n_xy keep
-        // their digits, from n_xy divided by its larger component where they would be
+        // e2 = c × e1): 1/|n| and 1/|n across c| from one division where the squares keep their
+        // digits, from n's part across c divided by its largest component where they would be
         // subnormal (e1 stays unit)
-        T inv_len, sg, e1x = T(1), e1y = T(0);
+        T inv_len, sg;
+        vec3 e1, e2;
         if (sl >= tiny_square_root()) {
             const T r = T(1) / (len * sl);
             inv_len = sl * r;
-            const T inv_sl = len * r;
             sg = sl * inv_len;
-            e1x = -l.x * inv_sl;
-            e1y = -l.y * inv_sl;
+            e1 = across * (-(len * r));
         } else {
             inv_len = T(1) / len;
             sg = T(0);
-            const T big = detail::max_of(std::fabs(l.x), std::fabs(l.y));
+            const T big = detail::max_abs3(across);
             if (big > T(0)) {
-                const T qx = l.x / big, qy = l.y / big, lq = std::sqrt(qx * qx + qy * qy);
+                const vec3 q = across / big;
+                const T lq = std::sqrt(glm::dot(q, q));
                 sg = big * lq * inv_len;
-                e1x = -qx / lq;
-                e1y = -qy / lq;
+                e1 = q / (-lq);
+            } else {
+                detail::basis_around(c, e1, e2);
             }
         }
-        const T cg = l.z * inv_len;
+        e2 = glm::cross(c, e1);
+        const T cg = vz * inv_len;
         const vec3 n = v * inv_len;
-        const T sa = cap.sin_alpha, ca = cap.cos_alpha;
         const T cos_sum = cg * ca - sg * sa;   // cos(g + a): the rim's lowest point's height
         const T cos_diff = cg * ca + sg * sa;  // cos(g − a): its highest point's height
         if (!(cos_diff > T(0))) return;        // entirely below the horizon
-        e_ = cap;
-        c_ = cap.z;
-        e1_ = e1x * cap.x + e1y * cap.y;  // the cap frame's (e1x, e1y, 0) and (−e1y, e1x, 0) in world space
-        e2_ = e1x * cap.y - e1y * cap.x;
+        c_ = c;
+        e1_ = e1;
+        e2_ = e2;
+        ta_ = ta;
         n_ = n;
         sg_ = sg;
         cg_ = cg;
         sa_ = sa;
         ca_ = ca;
-        omca_ = cap.one_minus_cos_alpha;
+        omca_ = omca;
         x0_ = ca * sg;
         ap_ = sa * cg;
         if (cos_sum >= T(0)) {  // above the horizon: the filled ellipse
@@ -197,12 +215,18 @@ public:
         empty_ = false;
     }
 
+public:
     /// True if the sampler cannot sample (not a cap, zero/NaN normal, cap below the horizon):
     /// every sample and pdf is then 0.
     APSE_FUNC bool empty() const noexcept { return empty_; }
 
-    /// The cap sampled (the empty ellipse for a sampler built on something else).
-    APSE_FUNC const SphericalEllipse<T>& ellipse() const noexcept { return e_; }
+    /// The cap sampled, with the frame project_sphere gives it (detail::basis_around its centre):
+    /// the same cap, whichever orthonormal (x, y) the cap given had. The empty ellipse for an
+    /// empty sampler.
+    APSE_FUNC SphericalEllipse<T> ellipse() const noexcept {
+        if (empty_) return SphericalEllipse<T>::make_empty();
+        return detail::SphereCap<T>{c_, ta_, sa_, ca_, omca_, T(0)}.ellipse();
+    }
 
     /// True if the receiver's horizon cuts the cap (the sampler then inverts a cumulative area).
     APSE_FUNC bool cut() const noexcept { return cut_; }
@@ -251,13 +275,14 @@ public:
     }
 
     /// Density of sample() at the world-space direction `d` (any non-zero length), in solid
-    /// angle: max(0, n·ω) / Omega_perp inside the cap (SphericalEllipse::contains), 0 outside,
+    /// angle: max(0, n·ω) / Omega_perp inside the cap (the test of SphericalEllipse::contains,
+    /// in this sampler's frame), 0 outside,
     /// below the horizon, for empty() or a zero/NaN direction.
     APSE_FUNC T pdf(const vec3& d) const noexcept {
         if (empty_) return T(0);
         bool ok = true;
         const vec3 l = detail::normalize_direction(d, ok);
-        if (!ok || !e_.contains(l)) return T(0);
+        if (!ok || !in_cap(l)) return T(0);
         const T c = glm::dot(n_, l);
         return c > T(0) ? c * inv_area_ : T(0);
     }
@@ -395,6 +420,16 @@ private:
         return inside(dir, pd > T(0) && height > T(0) ? pd : T(0), surely_inside(p, q, s, height));
     }
 
+    /// True if the unit direction l lies in the cap (boundary included): SphericalEllipse::contains
+    /// in the frame (e1, e2, c), l·c > 0 and (l·e1, l·e2)/(l·c) within tan a (an overflowing ratio
+    /// means outside).
+    APSE_FUNC bool in_cap(const vec3& l) const noexcept {
+        const T s = glm::dot(l, c_);
+        if (!(s > T(0))) return false;
+        const T p = (glm::dot(l, e1_) / s) / ta_, q = (glm::dot(l, e2_) / s) / ta_;
+        return p * p + q * q <= T(1);
+    }
+
     /// True if pdf() certainly finds the direction w = p e1 + q e2 + s c (|w| = 1 to rounding, as
     /// sample() assembles it) inside the cap and above the horizon, w's height over it being
     /// `height` (n·w to rounding): the gnomonic radius |(p, q)| / s at most tan a by a margin
@@ -404,7 +439,7 @@ private:
     /// above 32 eps. Saves sample() the pdf() check of inside() for all but the samples within
     /// that margin of the rim or the horizon.
     APSE_HOT_INLINE bool surely_inside(T p, T q, T s, T height) const noexcept {
-        const T ta = e_.tan_alpha;
+        const T ta = ta_;
         const T lim = s * ta * (T(1) - T(8) * detail::epsilon<T>()) - T(64) * detail::epsilon<T>() * (T(1) + ta);
         return height > T(32) * detail::epsilon<T>() && lim > T(0) && p * p + q * q <= lim * lim;
     }
@@ -591,13 +626,12 @@ private:
         return th - s;
     }
 
-    SphericalEllipse<T> e_ = SphericalEllipse<T>::make_empty();  ///< the cap
     vec3 c_{T(0), T(0), T(1)};   ///< the cap's centre (world)
     vec3 e1_{T(1), T(0), T(0)};  ///< the tangent at the centre pointing away from the normal (world)
     vec3 e2_{T(0), T(1), T(0)};  ///< c × e1 (world): the receiver frame's Y
     vec3 n_{T(0), T(0), T(1)};   ///< the receiver's unit normal (world)
     T sg_{}, cg_{};              ///< sin g, cos g: g the angle from the normal to the centre
-    T sa_{}, ca_{}, omca_{};     ///< sin a, cos a, 1 − cos a: a the cap's angular radius
+    T ta_{}, sa_{}, ca_{}, omca_{};  ///< tan a, sin a, cos a, 1 − cos a: a the cap's angular radius
     T x0_{}, ap_{}, one_minus_x0_{}, d0_{};  ///< the projected ellipse's centre x0 = cos a sin g, semi-axis a' = sin a cos g, 1 − x0, 1 − sin(g − a)
     T st_{}, ct_{}, theta_t_{};  ///< sin, cos of theta_t and theta_t (y_t = sin a sin theta_t)
     T inner_{}, outer_{};        ///< the areas of y in [0, y_t] and [y_t, b] (half the visible region each side)

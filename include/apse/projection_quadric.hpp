@@ -176,6 +176,58 @@ APSE_FUNC SphericalEllipse<T> project_ellipse(const glm::vec<3, T>& o, const glm
                                    k * k, det_b, basis, vec3(T(0), T(0), T(1)));
 }
 
+namespace detail {
+
+/// The cap the sphere |p − center| <= radius subtends at `o`, without its frame: project_sphere
+/// (below) is this and SphereCap::ellipse().
+template <class T>
+APSE_HOT_INLINE SphereCap<T> sphere_cap(const glm::vec<3, T>& o, const glm::vec<3, T>& center, T radius) noexcept {
+    using vec3 = glm::vec<3, T>;
+    SphereCap<T> c;
+    const vec3 p0 = center - o;
+    const T p_max = max_abs3(p0);
+    if (!(radius > T(0)) || !is_finite(radius + p_max) || !finite3(p0)) return c;
+    const T s_max = max_of(p_max, radius);
+    vec3 p = p0;
+    T r = radius;
+    const bool scaled = !(s_max >= safe_scale_min<T>() && s_max <= safe_scale_max<T>());
+    Pow2Scale<T> sc{0, T(1)};
+    if (scaled) {
+        sc = pow2_scale_for(s_max);
+        p = sc(p0);
+        r = sc(radius);
+    }
+    // L = sqrt((D − R)(D + R)): no product to contract into an FMA, so the result does not depend
+    // on the compiler's contraction (D^2 − R^2 would, by ~eps D/(D − R) relative).
+    const T dist = std::sqrt(glm::dot(p, p));
+    if (!(dist > r)) return c;
+    const T l = std::sqrt((dist - r) * (dist + r));
+    // tan alpha = R/L with 1 − cos alpha = R^2/(D (D + L)) (R q, not R^2 / ...: R^2 may be
+    // subnormal); the divisions paired (detail::div2)
+    T inv_d, tan_a, q;
+    div2(r, l, r, dist * (dist + l), tan_a, q);
+    inv_d = T(1) / dist;
+    if (!(tan_a >= tan_min<T>())) return c;  // as SphericalEllipse::from_tangents: empty
+    c.z = p * inv_d;
+    c.distance = scaled ? std::ldexp(dist, sc.e) : dist;
+    if (!(tan_a <= tan_cap<T>())) {  // capped at tan_cap, as SphericalEllipse::from_tangents
+        SinCos<T> sa, sb;
+        sin_cos_of_atan2(tan_cap<T>(), tan_cap<T>(), sa, sb);
+        c.tan_alpha = tan_cap<T>();
+        c.sin_alpha = sa.s;
+        c.cos_alpha = sa.c;
+        c.one_minus_cos_alpha = sa.omc;
+        return c;
+    }
+    c.tan_alpha = tan_a;
+    c.sin_alpha = r * inv_d;
+    c.cos_alpha = l * inv_d;
+    c.one_minus_cos_alpha = r * q;
+    return c;
+}
+
+}  // namespace detail
+
 /// The spherical cap subtended at `o` by the sphere |p − center| <= radius (docs/math.md §2b):
 /// alpha = beta = asin(radius / |center − o|), tan alpha = radius / sqrt((D − R)(D + R)),
 /// z towards the centre, (x, y) a deterministic frame around it (Duff et al. 2017's branchless
@@ -195,47 +247,7 @@ APSE_FUNC SphericalEllipse<T> project_ellipse(const glm::vec<3, T>& o, const glm
 template <class T>
 APSE_HOT_INLINE SphericalEllipse<T> project_sphere(const glm::vec<3, T>& o, const glm::vec<3, T>& center,
                                                    detail::type_identity_t<T> radius) noexcept {
-    using vec3 = glm::vec<3, T>;  ///< a 3-D vector (direction, point or normal)
-    using E = SphericalEllipse<T>;
-    const vec3 p0 = center - o;
-    const T p_max = detail::max_abs3(p0);
-    if (!(radius > T(0)) || !detail::is_finite(radius + p_max) || !detail::finite3(p0)) return E::make_empty();
-    const T s_max = detail::max_of(p_max, T(radius));
-    vec3 p = p0;
-    T r = radius;
-    if (!(s_max >= detail::safe_scale_min<T>() && s_max <= detail::safe_scale_max<T>())) {
-        const detail::Pow2Scale<T> sc = detail::pow2_scale_for(s_max);
-        p = sc(p0);
-        r = sc(T(radius));
-    }
-    // L = sqrt((D − R)(D + R)): no product to contract into an FMA, so the result does not depend
-    // on the compiler's contraction (D^2 − R^2 would, by ~eps D/(D − R) relative).
-    const T dist = std::sqrt(glm::dot(p, p));
-    if (!(dist > r)) return E::make_empty();
-    const T l = std::sqrt((dist - r) * (dist + r));
-    // Duff, Burgess, Christensen, Hery, Kensler, Liani, Villemin, "Building an Orthonormal Basis,
-    // Revisited" (JCGT 2017), for z = p / D: right-handed, continuous except where z.z changes
-    // sign. Its divisor −1/(sign + z.z) = −D/(sign D + p.z) is paired with 1/D, and
-    // tan alpha = R/L with 1 − cos alpha = R^2/(D (D + L)) (the divisions paired: detail::div2).
-    const T sign = std::copysign(T(1), p.z);
-    T inv_d, a, tan_a, q;
-    detail::div2(T(1), dist, -dist, sign * dist + p.z, inv_d, a);
-    detail::div2(r, l, r, dist * (dist + l), tan_a, q);  // (R q, not R^2 / ...: R^2 may be subnormal)
-    const T omc = r * q;
-    E e;
-    e.z = p * inv_d;
-    const T b = e.z.x * e.z.y * a;
-    e.x = vec3(T(1) + sign * e.z.x * e.z.x * a, sign * b, -sign * e.z.x);
-    e.y = vec3(b, sign + e.z.y * e.z.y * a, -e.z.y);
-    if (!(tan_a >= detail::tan_min<T>() && tan_a <= detail::tan_cap<T>()))
-        return E::from_tangents(e.x, e.y, e.z, tan_a, tan_a);  // empty, or capped at tan_cap
-    e.tan_alpha = e.tan_beta = tan_a;
-    e.sin_alpha = e.sin_beta = r * inv_d;
-    e.cos_alpha = e.cos_beta = l * inv_d;
-    e.one_minus_cos_alpha = e.one_minus_cos_beta = omc;
-    e.m = T(0);
-    e.one_minus_m = T(1);
-    return e;
+    return detail::sphere_cap(o, center, T(radius)).ellipse();
 }
 
 /// The spherical ellipse subtended at `o` by the solid ellipsoid

@@ -93,14 +93,7 @@ template <class T> struct SphereTarget {
     glm::vec<3, T> center;  ///< the sphere's centre
     T radius;               ///< its radius, > 0
     T dist;                 ///< |center − o| > radius
-    T dist_cos2;            ///< dist cos^2 alpha (alpha the cap's half-angle): dist_cos2_of
-
-    /// dist cos^2 alpha = radius cos^2 alpha / sin alpha from the sphere's cap (project_sphere's
-    /// scale-free sine and cosine: no overflow for far or huge spheres, a few ulps); 0 for an
-    /// empty cap.
-    static APSE_HOT_INLINE T dist_cos2_of(const SphericalEllipse<T>& cap, T radius) noexcept {
-        return cap.sin_alpha > T(0) ? radius * (cap.cos_alpha * (cap.cos_alpha / cap.sin_alpha)) : T(0);
-    }
+    T dist_cos2;            ///< dist cos^2 alpha (alpha the cap's half-angle)
 
     /// sampler.sample(u) (a sampler of the cap this sphere subtends at o) with the nearest point
     /// of the sphere along the direction and its distance: in closed form from the sample's polar
@@ -138,17 +131,6 @@ template <class T> struct SphereTarget {
     }
 };
 
-/// |v| without overflow or underflow of the squares: sqrt(v·v) where the largest component is
-/// within [safe_scale_min, safe_scale_max] (the squares then keep their digits), v scaled by its
-/// largest component elsewhere; 0 for a zero vector, NaN for a NaN one.
-template <class T> APSE_HOT_INLINE T robust_length(const glm::vec<3, T>& v) noexcept {
-    const T m = max_abs3(v);
-    if (m >= safe_scale_min<T>() && m <= safe_scale_max<T>()) return std::sqrt(glm::dot(v, v));
-    if (!(m > T(0))) return m;
-    const glm::vec<3, T> s = v * (T(1) / m);
-    return m * std::sqrt(glm::dot(s, s));
-}
-
 }  // namespace detail
 
 /// A sphere light (centre, radius) seen from one shading point o, ready to sample with
@@ -179,7 +161,7 @@ public:
     template <class... SamplerArgs>
     APSE_HOT_INLINE SphereLight(const vec3& o, const vec3& center, detail::type_identity_t<T> radius,
                           const SamplerArgs&... sampler_args) noexcept
-        : SphereLight(FromCap{}, project_sphere(o, center, radius), o, center, radius, sampler_args...) {}
+        : SphereLight(FromCap{}, detail::sphere_cap(o, center, T(radius)), o, center, radius, sampler_args...) {}
 
     /// The sampler's type: what `Sampler` does on a cap (the class comment).
     using CapSampler = typename Sampler::CapSampler;
@@ -189,14 +171,15 @@ public:
     /// pdf is then 0.
     APSE_FUNC bool empty() const noexcept { return sampler_.empty(); }
 
-    /// The cap the sphere subtends at o (empty for invalid input).
-    APSE_FUNC const SphericalEllipse<T>& ellipse() const noexcept { return sampler_.ellipse(); }
+    /// The cap the sphere subtends at o, as project_sphere gives it (empty for invalid input).
+    APSE_FUNC SphericalEllipse<T> ellipse() const noexcept { return sampler_.ellipse(); }
 
     /// Solid angle of the sphere seen from o: 2 pi (1 − cos alpha), sin alpha = radius / distance
     /// (steradians; 0 when empty), from the cap's stored 1 − cos alpha (no cancellation for far
     /// spheres).
     APSE_FUNC T solid_angle() const noexcept {
-        return ellipse().empty() ? T(0) : ellipse().cap_solid_angle();
+        const SphericalEllipse<T> e = ellipse();
+        return e.empty() ? T(0) : e.cap_solid_angle();
     }
 
     /// True if the samples are cosine-weighted (Sampler is CosineWeighted, the receiver normal is
@@ -223,10 +206,20 @@ public:
 private:
     struct FromCap {};
     template <class... SamplerArgs>
-    APSE_HOT_INLINE SphereLight(FromCap, const SphericalEllipse<T>& cap, const vec3& o, const vec3& center, T radius,
+    APSE_HOT_INLINE SphereLight(FromCap, const detail::SphereCap<T>& cap, const vec3& o, const vec3& center, T radius,
                                 const SamplerArgs&... sampler_args) noexcept
-        : sphere_{o, center, radius, detail::robust_length(center - o), detail::SphereTarget<T>::dist_cos2_of(cap, radius)},
-          sampler_(cap, sampler_args...) {}
+        : sphere_{o, center, radius, cap.distance, cap.distance * (cap.cos_alpha * cap.cos_alpha)},
+          sampler_(make_sampler(cap, sampler_args...)) {}
+
+    /// The sampler of the cap: from the cap without its frame where it takes one (the
+    /// cosine-weighted samplers, which read no frame), from project_sphere's ellipse otherwise.
+    template <class... SamplerArgs>
+    static APSE_HOT_INLINE CapSampler make_sampler(const detail::SphereCap<T>& cap, const SamplerArgs&... sampler_args) noexcept {
+        if constexpr (std::is_constructible<CapSampler, const detail::SphereCap<T>&, const SamplerArgs&...>::value)
+            return CapSampler(cap, sampler_args...);
+        else
+            return CapSampler(cap.ellipse(), sampler_args...);
+    }
 
     detail::SphereTarget<T> sphere_;  ///< the shading point, the sphere and its distance
     CapSampler sampler_;

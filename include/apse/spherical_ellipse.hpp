@@ -39,6 +39,13 @@ template <class T> APSE_FUNC constexpr T tan_min() noexcept {
 /// cos = 1/sqrt(q) = (q + sqrt(q)) R, 1 − cos = t²/(q + sqrt(q)) = t² sqrt(q) R, sin = t cos.
 /// Both tangents of an ellipse at once, their square roots and divisions paired (detail::sqrt2,
 /// detail::div2; bit-identical to one at a time).
+/// Solid angle of a cap from sin, cos and 1 − cos of its angular radius:
+/// SphericalEllipse::cap_solid_angle.
+template <class T> APSE_HOT_INLINE T cap_solid_angle_of(T sin_a, T cos_a, T one_minus_cos_a) noexcept {
+    if (one_minus_cos_a > T(0)) return two_pi_v<T> * one_minus_cos_a;
+    return (two_pi_v<T> * sin_a) * sin_a / (T(1) + cos_a);
+}
+
 template <class T> struct SinCos {
     T s, c, omc;
 };
@@ -184,8 +191,7 @@ template <class T> struct SphericalEllipse {
     /// denormals are (-ffast-math), (2 pi sin alpha) sin alpha / (1 + cos alpha) instead, which
     /// stays normal. Not meaningful for other ellipses (solid_angle() is).
     APSE_HOT_INLINE T cap_solid_angle() const noexcept {
-        if (one_minus_cos_alpha > T(0)) return detail::two_pi_v<T> * one_minus_cos_alpha;
-        return (detail::two_pi_v<T> * sin_alpha) * sin_alpha / (T(1) + cos_alpha);
+        return detail::cap_solid_angle_of(sin_alpha, cos_alpha, one_minus_cos_alpha);
     }
 
     /// Solid angle (steradians) of the ellipse, docs/math.md §3, by the cancellation-free form
@@ -228,5 +234,60 @@ template <class T> struct SphericalEllipse {
         return u * u + v * v <= T(1);
     }
 };
+
+namespace detail {
+
+/// (x, y) completing the unit vector z to a right-handed orthonormal basis: Duff et al.'s
+/// branchless basis ("Building an Orthonormal Basis, Revisited", JCGT 2017), continuous except
+/// where z.z changes sign; its divisor sign + z.z is at least 1 in magnitude (no cancellation).
+template <class T>
+APSE_HOT_INLINE void basis_around(const glm::vec<3, T>& z, glm::vec<3, T>& x, glm::vec<3, T>& y) noexcept {
+    const T sign = std::copysign(T(1), z.z), a = T(-1) / (sign + z.z), b = z.x * z.y * a;
+    x = glm::vec<3, T>(T(1) + sign * z.x * z.x * a, sign * b, -sign * z.x);
+    y = glm::vec<3, T>(b, sign + z.y * z.y * a, -z.y);
+}
+
+/// The spherical cap a sphere subtends at a shading point, without a frame around its centre:
+/// what project_sphere computes before it builds that frame, and what a sampler of caps that
+/// needs no frame (ProjectedCapSampler) reads. `ellipse()` completes it into project_sphere's
+/// SphericalEllipse, bit for bit. Fields as SphericalEllipse's for alpha = beta; `distance` =
+/// |center − o| (for the shadow rays of SphereLight). Empty (tan_alpha 0) where project_sphere's
+/// result is.
+template <class T> struct SphereCap {
+    glm::vec<3, T> z{T(0), T(0), T(1)};  ///< centre direction (unit)
+    T tan_alpha = T(0);                    ///< tan(alpha); 0 iff empty
+    T sin_alpha = T(0);                    ///< sin(alpha)
+    T cos_alpha = T(1);                    ///< cos(alpha)
+    T one_minus_cos_alpha = T(0);          ///< 1 − cos(alpha), no cancellation
+    T distance = T(0);                     ///< |center − o| (0 when empty)
+
+    /// True if the sphere subtends no cap (invalid input, o inside or on it, too small a cap).
+    APSE_HOT_INLINE bool empty() const noexcept { return !(tan_alpha > T(0)); }
+
+    /// Solid angle (SphericalEllipse::cap_solid_angle).
+    APSE_HOT_INLINE T solid_angle() const noexcept { return cap_solid_angle_of(sin_alpha, cos_alpha, one_minus_cos_alpha); }
+
+    /// The cap as a SphericalEllipse (project_sphere's result), (x, y) = basis_around(z).
+    APSE_HOT_INLINE SphericalEllipse<T> ellipse() const noexcept {
+        if (empty()) return SphericalEllipse<T>::make_empty();
+        SphericalEllipse<T> e;
+        basis_around(z, e.x, e.y);
+        e.z = z;
+        e.tan_alpha = e.tan_beta = tan_alpha;
+        e.sin_alpha = e.sin_beta = sin_alpha;
+        e.cos_alpha = e.cos_beta = cos_alpha;
+        e.one_minus_cos_alpha = e.one_minus_cos_beta = one_minus_cos_alpha;
+        e.m = T(0);
+        e.one_minus_m = T(1);
+        return e;
+    }
+};
+
+/// The ellipse of a cap given as a SphericalEllipse (itself) or as a SphereCap (its ellipse()):
+/// for the samplers that take either.
+template <class T> APSE_HOT_INLINE const SphericalEllipse<T>& ellipse_of(const SphericalEllipse<T>& e) noexcept { return e; }
+template <class T> APSE_HOT_INLINE SphericalEllipse<T> ellipse_of(const SphereCap<T>& c) noexcept { return c.ellipse(); }
+
+}  // namespace detail
 
 }  // namespace apse
