@@ -140,12 +140,13 @@ private:
     enum class Mode : int { empty, plain, cap };
 
     /// CosineWeighted's choice on a cap: `table` is null for the maps built without one.
+    /// ProjectedCapSampler first: it checks the normal and the cap itself, and when it can
+    /// sample, so can the map (its density 1/Omega is finite whenever ProjectedCapSampler's is,
+    /// with its margin: Omega >= Omega_perp), so only a tabulated map's table is checked there.
     template <class Cap>
     APSE_HOT_INLINE void init(const Cap& cap, const TabulationView* table, const vec3& normal) noexcept {
         mode_ = Mode::empty;
-        const T scale = max_abs3(normal);
-        const bool normal_ok = scale > T(0) && is_finite(scale) && finite3(normal);
-        if (normal_ok && plain_can_sample(cap, table)) {
+        if (!table || table_usable(*table)) {
             new (&u_.cap) detail::ProjectedCapSampler<T>(cap, normal);  // built in place: no copy
             if (!u_.cap.empty()) {
                 mode_ = Mode::cap;
@@ -157,14 +158,9 @@ private:
         } else {
             new (&u_.plain) Plain(ellipse_of(cap));
         }
+        const T scale = max_abs3(normal);
+        const bool normal_ok = scale > T(0) && is_finite(scale) && finite3(normal);
         if (!normal_ok && !u_.plain.empty()) mode_ = Mode::plain;
-    }
-
-    /// Whether the map (Plain) can sample `cap`, without building it: a cap with a finite
-    /// density 1/Omega and, for the tabulated maps, a usable table (the maps' own conditions on
-    /// a cap).
-    template <class Cap> static APSE_HOT_INLINE bool plain_can_sample(const Cap& cap, const TabulationView* table) noexcept {
-        return (!table || table_usable(*table)) && cap_density(cap) > T(0);
     }
 
     Mode mode_;

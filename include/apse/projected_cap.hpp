@@ -25,6 +25,7 @@
 /// cancellation, so that small caps keep their digits (samples stay inside the cap).
 
 #include <cmath>
+#include <limits>
 
 #include "config.hpp"
 #include "detail/math.hpp"
@@ -103,8 +104,10 @@ public:
     /// if `cap` is not a cap (`is_cap()` false: empty or a non-circular ellipse), for a zero, NaN
     /// or infinite normal, for a cap entirely below the horizon (cos(g − a) <= 0, g the angle
     /// from the normal to the centre, a the cap's angular radius), and for a projected solid
-    /// angle so small (subnormal: a cap below ~1e-154 rad in double) that its reciprocal, the
-    /// density's scale, overflows.
+    /// angle so small (at most 2 / the largest T: a cap below ~1e-154 rad in double, ~1e-19 rad
+    /// in float) that its reciprocal, the density's scale, overflows or comes within a factor 2
+    /// of it. (That margin makes the cap's plain density 1/Omega finite too whenever this sampler
+    /// is not empty, Omega >= Omega_perp: CapCosine relies on it.)
     APSE_HOT_INLINE ProjectedCapSampler(const SphericalEllipse<T>& cap, const vec3& receiver_normal) noexcept {
         if (cap.is_cap()) init(cap.z, cap.tan_alpha, cap.sin_alpha, cap.cos_alpha, cap.one_minus_cos_alpha, receiver_normal);
     }
@@ -119,8 +122,7 @@ public:
 private:
     /// The set-up for the cap (centre c, tan, sin, cos and 1 − cos of its angular radius a)
     /// and the receiver normal (the constructors' contract). The receiver frame: g from
-    /// n·c, e1 from n's part across c, taken twice (Gram–Schmidt) so that it stays orthogonal to
-    /// c to rounding however close n is to ±c; e2 = c × e1.
+    /// n·c, e1 from n's part across c, e2 = c × e1.
     APSE_HOT_INLINE void init(const vec3& c, T ta, T sa, T ca, T omca, const vec3& receiver_normal) noexcept {
         const T scale = detail::max_abs3(receiver_normal);
         if (!(scale > T(0)) || !detail::is_finite(scale) || !detail::finite3(receiver_normal)) return;
@@ -129,8 +131,10 @@ private:
         // its reciprocal may be subnormal)
         const vec3 v = scale >= T(1) / normal_range() && scale <= normal_range() ? receiver_normal : receiver_normal / scale;
         const T vz = glm::dot(v, c);
-        vec3 across = v - vz * c;
-        across -= glm::dot(across, c) * c;
+        // v's part across c as (c × v) × c = v − (v·c) c: orthogonal to c to rounding relative to
+        // its own length however close n comes to ±c (v − (v·c) c computed directly would keep
+        // ~eps |v| along c)
+        const vec3 cv = glm::cross(c, v), across = glm::cross(cv, c);
         const T len = std::sqrt(glm::dot(v, v)), sl = std::sqrt(glm::dot(across, across));
         // sin g and e1 (the unit tangent at the centre pointing away from n, any one when n ∥ c;
         // e2 = c × e1): 1/|n| and 1/|n across c| from one division where the squares keep their
@@ -211,7 +215,7 @@ private:
         }
         if (!(area_ > T(0)) || !detail::is_finite(area_)) return;
         inv_area_ = T(1) / area_;
-        if (!detail::is_finite(inv_area_)) return;  // a subnormal Omega_perp: no finite density
+        if (!(inv_area_ < T(0.5) * std::numeric_limits<T>::max())) return;  // too small an Omega_perp (constructor comment)
         empty_ = false;
     }
 
@@ -340,13 +344,12 @@ private:
     /// map's disk point (dx, dy), its flat-disk point Q = cos a c + sin a (dx e1 + dy e2), lifted
     /// along n: w = Q + t n, t = sin^2 a (1 − r^2) / (Q_z + sqrt(Q_z^2 + sin^2 a (1 − r^2))).
     APSE_HOT_INLINE Above sample_above(const vec2& uc) const noexcept {
-        const detail::ConcentricSigned<T> d = detail::concentric_to_disk_signed(uc);
-        // (cos, sin) of the angle in [−pi/4, 3pi/4]: of |angle| up to pi/2, of angle − pi/2 beyond
-        const bool high = d.angle > detail::half_pi_v<T>;
-        const detail::SinCosValues<T> v = detail::sin_cos_of_angle(high ? d.angle - detail::half_pi_v<T> : std::fabs(d.angle));
-        const T ca = high ? -v.s : v.c, sa = high ? v.c : std::copysign(v.s, d.angle);
-        const T dx = d.radius * ca, dy = d.radius * sa;
-        const T r = std::fabs(d.radius);
+        // the concentric map folded into its quadrant (branch-free: the octant is a max, not a
+        // test), the angle's sine and cosine in the quadrant by polynomials
+        const detail::ConcentricFold<T> d = detail::concentric_fold(uc);
+        const detail::SinCosValues<T> v = detail::sin_cos_quarter_turn(d.fold.fraction);
+        const T r = d.radius;
+        const T dx = d.fold.sign_x * (r * v.c), dy = d.fold.sign_y * (r * v.s);
         const T rest = sa_ * sa_ * ((T(1) - r) * (T(1) + r));
         const T qz = detail::max_of(ca_ * cg_ - sa_ * sg_ * dx, T(0));
         const T den = qz + std::sqrt(qz * qz + rest);

@@ -39,13 +39,6 @@ template <class T> APSE_FUNC constexpr T tan_min() noexcept {
 /// cos = 1/sqrt(q) = (q + sqrt(q)) R, 1 − cos = t²/(q + sqrt(q)) = t² sqrt(q) R, sin = t cos.
 /// Both tangents of an ellipse at once, their square roots and divisions paired (detail::sqrt2,
 /// detail::div2; bit-identical to one at a time).
-/// Solid angle of a cap from sin, cos and 1 − cos of its angular radius:
-/// SphericalEllipse::cap_solid_angle.
-template <class T> APSE_HOT_INLINE T cap_solid_angle_of(T sin_a, T cos_a, T one_minus_cos_a) noexcept {
-    if (one_minus_cos_a > T(0)) return two_pi_v<T> * one_minus_cos_a;
-    return (two_pi_v<T> * sin_a) * sin_a / (T(1) + cos_a);
-}
-
 template <class T> struct SinCos {
     T s, c, omc;
 };
@@ -191,7 +184,8 @@ template <class T> struct SphericalEllipse {
     /// denormals are (-ffast-math), (2 pi sin alpha) sin alpha / (1 + cos alpha) instead, which
     /// stays normal. Not meaningful for other ellipses (solid_angle() is).
     APSE_HOT_INLINE T cap_solid_angle() const noexcept {
-        return detail::cap_solid_angle_of(sin_alpha, cos_alpha, one_minus_cos_alpha);
+        if (one_minus_cos_alpha > T(0)) return detail::two_pi_v<T> * one_minus_cos_alpha;
+        return (detail::two_pi_v<T> * sin_alpha) * sin_alpha / (T(1) + cos_alpha);
     }
 
     /// Solid angle (steradians) of the ellipse, docs/math.md §3, by the cancellation-free form
@@ -263,9 +257,6 @@ template <class T> struct SphereCap {
 
     /// True if the sphere subtends no cap (invalid input, o inside or on it, too small a cap).
     APSE_HOT_INLINE bool empty() const noexcept { return !(tan_alpha > T(0)); }
-
-    /// Solid angle (SphericalEllipse::cap_solid_angle).
-    APSE_HOT_INLINE T solid_angle() const noexcept { return cap_solid_angle_of(sin_alpha, cos_alpha, one_minus_cos_alpha); }
 
     /// The cap as a SphericalEllipse (project_sphere's result), (x, y) = basis_around(z).
     APSE_HOT_INLINE SphericalEllipse<T> ellipse() const noexcept {

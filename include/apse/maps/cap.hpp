@@ -61,21 +61,12 @@ template <class T> APSE_FUNC glm::vec<2, T> cap_coordinates(const glm::vec<3, T>
     return glm::vec<2, T>(u1, u2);
 }
 
-/// 1/Omega for a cap of solid angle Omega when it is finite and positive, else 0.
-template <class T> APSE_HOT_INLINE T density_of_solid_angle(T omega) noexcept {
-    const T inv = T(1) / omega;
-    return is_finite(inv) && inv > T(0) ? inv : T(0);
-}
-
 /// 1/Omega of a cap (Omega = cap_solid_angle()) when it is finite and positive; 0 for an ellipse
 /// that is not a cap (or empty) and for a density that overflows.
 template <class T> APSE_HOT_INLINE T cap_density(const SphericalEllipse<T>& e) noexcept {
-    return e.is_cap() ? density_of_solid_angle(e.cap_solid_angle()) : T(0);
-}
-
-/// The same for a sphere's cap without its frame (detail::SphereCap).
-template <class T> APSE_HOT_INLINE T cap_density(const SphereCap<T>& c) noexcept {
-    return c.empty() ? T(0) : density_of_solid_angle(c.solid_angle());
+    if (!e.is_cap()) return T(0);
+    const T inv = T(1) / e.cap_solid_angle();
+    return is_finite(inv) && inv > T(0) ? inv : T(0);
 }
 
 /// The samples of RadialMap (Ld false) or LdRadialMap (Ld true) — and of TabulatedMap and
