@@ -104,7 +104,7 @@ public:
     APSE_FUNC bool cosine_weighted() const noexcept { return detail::weighted_of(sampler_, 0); }
 
     /// The disk's spherical ellipse.
-    APSE_FUNC const SphericalEllipse<T>& ellipse() const noexcept { return sampler_.ellipse(); }
+    APSE_FUNC SphericalEllipse<T> ellipse() const noexcept { return sampler_.ellipse(); }
 
     /// The sampler (what it reports: weighted(), the map's kind, ...).
     APSE_FUNC const Sampler& sampler() const noexcept { return sampler_; }

@@ -178,9 +178,9 @@ public:
         return visit([](const auto& s) { return s.empty(); });
     }
 
-    /// The ellipse sampled.
-    APSE_FUNC const SphericalEllipse<T>& ellipse() const noexcept {
-        return visit([](const auto& s) -> const SphericalEllipse<T>& { return s.ellipse(); });
+    /// The ellipse sampled (by value: the cap samplers of a sphere light rebuild theirs).
+    APSE_FUNC SphericalEllipse<T> ellipse() const noexcept {
+        return visit([](const auto& s) -> SphericalEllipse<T> { return s.ellipse(); });
     }
 
     /// The chosen sampler's sample(u).
