@@ -25,7 +25,6 @@
 /// cancellation, so that small caps keep their digits (samples stay inside the cap).
 
 #include <cmath>
-#include <limits>
 
 #include "config.hpp"
 #include "detail/math.hpp"
@@ -215,7 +214,7 @@ private:
         }
         if (!(area_ > T(0)) || !detail::is_finite(area_)) return;
         inv_area_ = T(1) / area_;
-        if (!(inv_area_ < T(0.5) * std::numeric_limits<T>::max())) return;  // too small an Omega_perp (constructor comment)
+        if (!(inv_area_ < density_limit())) return;  // too small an Omega_perp (constructor comment)
         empty_ = false;
     }
 
@@ -473,6 +472,11 @@ private:
             if (p > T(0)) return {w, p};
         }
         return {w, T(0)};
+    }
+
+    /// Half the largest finite T: the densities' scale 1/Omega_perp stays below it (constructor).
+    static APSE_FUNC constexpr T density_limit() noexcept {
+        return sizeof(T) == sizeof(float) ? T(0x1.fffffep126f) : T(0x1.fffffffffffffp1022);
     }
 
     /// A magnitude whose square is far enough above the subnormals (2^-960 in double, 2^-100 in

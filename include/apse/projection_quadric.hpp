@@ -197,11 +197,12 @@ APSE_HOT_INLINE SphereCap<T> sphere_cap(const glm::vec<3, T>& o, const glm::vec<
         p = sc(p0);
         r = sc(radius);
     }
-    // L = sqrt((D − R)(D + R)): no product to contract into an FMA, so the result does not depend
-    // on the compiler's contraction (D^2 − R^2 would, by ~eps D/(D − R) relative).
-    const T dist = std::sqrt(glm::dot(p, p));
+    // L = sqrt(D^2 − R^2) from D^2 itself, not from D (its square root beside D's, not after it):
+    // the rounding of D^2 gives both forms the same relative error ~eps D/(D − R) near the surface
+    const T dist2 = glm::dot(p, p);
+    const T dist = std::sqrt(dist2);
     if (!(dist > r)) return c;
-    const T l = std::sqrt((dist - r) * (dist + r));
+    const T l = std::sqrt(max_of(dist2 - r * r, T(0)));
     // tan alpha = R/L with 1 − cos alpha = R^2/(D (D + L)) (R q, not R^2 / ...: R^2 may be
     // subnormal); the divisions paired (detail::div2)
     T inv_d, tan_a, q;
@@ -233,7 +234,7 @@ APSE_HOT_INLINE SphereCap<T> sphere_cap(const glm::vec<3, T>& o, const glm::vec<
 /// z towards the centre, (x, y) a deterministic frame around it (Duff et al. 2017's branchless
 /// orthonormal basis). The result is an exact cap (SphericalEllipse::is_cap(): tan_alpha ==
 /// tan_beta), which every map samples in closed form. Every field comes from D, R and
-/// L = sqrt((D − R)(D + R)) directly: sin alpha = R/D, cos alpha = L/D, tan alpha = R/L,
+/// L = sqrt(D^2 − R^2) directly: sin alpha = R/D, cos alpha = L/D, tan alpha = R/L,
 /// 1 − cos alpha = R^2/(D (D + L)), no cancellation; the scene is rescaled by an exact power of
 /// two only when its scale is extreme (outside [2^-100, 2^100] in double, [2^-16, 2^16] in
 /// float), so D^2 neither overflows nor underflows.
