@@ -310,6 +310,51 @@ TEMPLATE_TEST_CASE("sphere light: the samples, pdfs and inverts of its sampler b
     }
 }
 
+TEMPLATE_TEST_CASE("sphere light: the smallest caps, at the limit of a finite density", "[sphere_light][robust]", float,
+                   double) {
+    using T = TestType;
+    // Caps just above the smallest tangent project_sphere keeps (tan alpha = 2^-63 in float,
+    // 2^-511 in double), seen by receivers ever closer to grazing, so that the projected solid
+    // angle Omega_perp = pi sin^2 alpha cos g (and, cut by the horizon, less) crosses the limit
+    // below which the cosine-weighted sampler is empty (1/Omega_perp within a factor 2 of the
+    // largest T). The light must stay the sampler built from project_sphere (same emptiness,
+    // same samples), and whenever it samples cosine-weighted the plain map must be able to sample
+    // the same cap: the sampler's margin is what lets the light skip the map's density check.
+    const int e_min = sizeof(T) == 4 ? 63 : 511;
+    const std::vector<Vec2<T>> us = {Vec2<T>(T(0.5)), Vec2<T>(T(0.25), T(0.75)), Vec2<T>(T(0.9), T(0.1))};
+    int weighted = 0, plain_or_empty = 0;
+    for (double k : {1.0, 1.5, 4.0, 64.0}) {
+        const Vec3<T> o(T(0)), c(T(0), T(0), T(std::ldexp(1.0, e_min) / k));  // sin alpha ~ k 2^-e_min
+        for (int j = 0; j <= 40; ++j) {
+            // cos g from 1 down to ~2^-(e_min + 40): above the horizon, then cut by it
+            const double cg = j == 0 ? 1.0 : std::ldexp(1.0, -int(j * (e_min + 40) / 40));
+            const Vec3<T> n(T(std::sqrt(1 - cg * cg)), T(0), T(cg));
+            INFO((sizeof(T) == 4 ? "float" : "double") << " sin alpha ~ " << k << " 2^-" << e_min << ", cos g = " << cg);
+            const apse::SphereLight<apse::CosineWeighted<apse::LdRadialMap<T>>> light(o, c, T(1), n);
+            const apse::CosineWeighted<apse::LdRadialMap<T>> ref(apse::project_sphere(o, c, T(1)), n);
+            REQUIRE(light.empty() == ref.empty());
+            CHECK(light.cosine_weighted() == ref.weighted());
+            if (light.cosine_weighted()) {
+                ++weighted;
+                CHECK_FALSE(apse::LdRadialMap<T>(apse::project_sphere(o, c, T(1))).empty());
+            } else {
+                ++plain_or_empty;
+            }
+            for (const Vec2<T>& u : us) {
+                const auto a = light.sample(u);
+                const auto b = ref.sample(u);
+                CHECK(same(a.pdf, b.pdf));
+                CHECK(same(a.direction, b.direction));
+                CHECK(std::isfinite(double(a.pdf)));
+                CHECK(a.pdf >= T(0));
+            }
+        }
+    }
+    // both sides of the limit were reached
+    CHECK(weighted > 0);
+    CHECK(plain_or_empty > 0);
+}
+
 TEMPLATE_TEST_CASE("sphere light: points on the sphere, distances, pdf and the stateless pdf", "[sphere_light]", float,
                    double) {
     using T = TestType;
