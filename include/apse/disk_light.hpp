@@ -103,8 +103,9 @@ public:
     /// ∝ max(0, n·ω). False for the maps' uniform samples.
     APSE_FUNC bool cosine_weighted() const noexcept { return detail::weighted_of(sampler_, 0); }
 
-    /// The disk's spherical ellipse.
-    APSE_FUNC SphericalEllipse<T> ellipse() const noexcept { return sampler_.ellipse(); }
+    /// The disk's spherical ellipse: the sampler's (a reference to it, or a copy where the
+    /// sampler returns one: RuntimeSampler).
+    APSE_FUNC decltype(auto) ellipse() const noexcept { return sampler_.ellipse(); }
 
     /// The sampler (what it reports: weighted(), the map's kind, ...).
     APSE_FUNC const Sampler& sampler() const noexcept { return sampler_; }

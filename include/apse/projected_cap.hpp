@@ -374,7 +374,7 @@ private:
             const T guess = detail::min_of(cbrt_guess(T(1.5) * target), xmax);
             T sx = T(0), cx = T(1);
             auto eval = [&](T x, T& value, T& derivative) {
-                const detail::SinCosValues<T> sc = detail::sin_cos_of_angle(x);
+                const detail::SinCosValues<T> sc = sin_cos_in_range(x);
                 sx = sc.s;
                 cx = sc.c;
                 value = detail::angle_minus_sin_cos(x, sx, cx, T(1)) - target;
@@ -516,12 +516,10 @@ private:
     APSE_FUNC void solve_inner(T target, T guess, T& sth, T& cth) const noexcept {
         T lo = T(0), hi = theta_t_, th = detail::clamp(guess, lo, hi);
         const T tol = tolerance() * inner_;
-        bool last = false;
+        const detail::SinCosValues<T> sc0 = sin_cos_in_range(th);
+        sth = sc0.s;
+        cth = sc0.c;
         for (int it = 0;; ++it) {
-            const detail::SinCosValues<T> sc = detail::sin_cos_of_angle(th);
-            sth = sc.s;
-            cth = sc.c;
-            if (last) break;
             const T yy = rim_y(sth), w = rim_w(cth);
             // 1/w, 1/(1 + w) and 1/(w + x_lo) from one division (w >= cos a: no underflow)
             const T xlo = x0_ - ap_ * cth, h = ca_ * cg_ + sa_ * sg_ * cth;
@@ -543,9 +541,29 @@ private:
             const bool inside = next > lo && next < hi;
             if (!inside) next = T(0.5) * (lo + hi);
             if (next == th) break;
-            last = inside && std::fabs(next - th) <= predicted_stop() * (theta_t_ - th);
+            const T step = next - th;
+            const bool last = inside && std::fabs(step) <= predicted_stop() * (theta_t_ - th);
             th = next;
+            if (last) {
+                // the last step: the sine and cosine turned by it, sin d = d − d^3/6 and
+                // cos d = 1 − d^2/2 (|d| <= 2^-18 pi/2 in double, 2^-8 pi/2 in float: the next
+                // terms are below eps/4), instead of the polynomials again
+                const T d2 = step * step, sd = step - step * d2 * T(1.0 / 6.0), cd = T(1) - T(0.5) * d2;
+                const T s1 = sth * cd + cth * sd, c1 = cth * cd - sth * sd;
+                sth = detail::min_of(s1, T(1));
+                cth = detail::max_of(c1, T(0));
+                break;
+            }
+            const detail::SinCosValues<T> sc = sin_cos_in_range(th);
+            sth = sc.s;
+            cth = sc.c;
         }
+    }
+
+    /// sin and cos of theta in [0, pi/2] (no NaN: the root finder's iterates) by the polynomials
+    /// of detail::sin_cos_of_angle, without its clamp's NaN test.
+    static APSE_HOT_INLINE detail::SinCosValues<T> sin_cos_in_range(T th) noexcept {
+        return detail::sin_cos_quarter_turn(detail::min_of(th * T(0.63661977236758134308), T(1)));
     }
 
     /// The first guess of t = theta/theta_t where H = q inner (q in [0, 1]): two Newton steps on

@@ -85,6 +85,11 @@ template <class S0, class... Rest> union OneOf<S0, Rest...> {
 template <class Plain, class Cosine> struct OneOfBoth;
 template <class... P, class... C> struct OneOfBoth<TypeList<P...>, TypeList<C...>> {
     using type = OneOf<P..., C...>;
+    /// True if every sampler's ellipse() returns a reference (the cap samplers of CosineWeighted
+    /// return a copy: they rebuild theirs).
+    static constexpr bool ellipse_by_reference =
+        (std::is_reference<decltype(std::declval<const P&>().ellipse())>::value && ...) &&
+        (std::is_reference<decltype(std::declval<const C&>().ellipse())>::value && ...);
 };
 
 /// True if the map `Map` is built from (ellipse, table): the tabulated maps.
@@ -178,9 +183,12 @@ public:
         return visit([](const auto& s) { return s.empty(); });
     }
 
-    /// The ellipse sampled (by value: the cap samplers of a sphere light rebuild theirs).
-    APSE_FUNC SphericalEllipse<T> ellipse() const noexcept {
-        return visit([](const auto& s) -> SphericalEllipse<T> { return s.ellipse(); });
+    /// The ellipse sampled: a reference to the chosen sampler's, or a copy where the samplers
+    /// return one (the cap samplers of a sphere light's CosineWeighted rebuild theirs).
+    using EllipseResult = std::conditional_t<detail::OneOfBoth<Plain, Cosine>::ellipse_by_reference,
+                                             const SphericalEllipse<T>&, SphericalEllipse<T>>;
+    APSE_FUNC EllipseResult ellipse() const noexcept {
+        return visit([](const auto& s) -> EllipseResult { return s.ellipse(); });
     }
 
     /// The chosen sampler's sample(u).

@@ -171,14 +171,16 @@ public:
     /// pdf is then 0.
     APSE_FUNC bool empty() const noexcept { return sampler_.empty(); }
 
-    /// The cap the sphere subtends at o, as project_sphere gives it (empty for invalid input).
-    APSE_FUNC SphericalEllipse<T> ellipse() const noexcept { return sampler_.ellipse(); }
+    /// The cap the sphere subtends at o, as project_sphere gives it (empty for invalid input): a
+    /// reference to the sampler's, or a copy where the sampler rebuilds it (the cosine-weighted
+    /// samplers of caps).
+    APSE_FUNC decltype(auto) ellipse() const noexcept { return sampler_.ellipse(); }
 
     /// Solid angle of the sphere seen from o: 2 pi (1 − cos alpha), sin alpha = radius / distance
     /// (steradians; 0 when empty), from the cap's stored 1 − cos alpha (no cancellation for far
     /// spheres).
     APSE_FUNC T solid_angle() const noexcept {
-        const SphericalEllipse<T> e = ellipse();
+        const auto& e = ellipse();
         return e.empty() ? T(0) : e.cap_solid_angle();
     }
 
