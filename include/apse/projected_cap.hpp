@@ -122,7 +122,7 @@ private:
     /// The set-up for the cap (centre c, tan, sin, cos and 1 − cos of its angular radius a)
     /// and the receiver normal (the constructors' contract). The receiver frame: g from
     /// n·c, e1 from n's part across c, e2 = c × e1.
-    APSE_HOT_INLINE void init(const vec3& c, T ta, T sa, T ca, T omca, const vec3& receiver_normal) noexcept {
+    APSE_NOINLINE APSE_FUNC void init(const vec3& c, T ta, T sa, T ca, T omca, const vec3& receiver_normal) noexcept {
         const T scale = detail::max_abs3(receiver_normal);
         if (!(scale > T(0)) || !detail::is_finite(scale) || !detail::finite3(receiver_normal)) return;
         // |n| from n itself where neither its square nor the products below overflow or lose
@@ -131,10 +131,23 @@ private:
         const vec3 v = scale >= T(1) / normal_range() && scale <= normal_range() ? receiver_normal : receiver_normal / scale;
         const T vz = glm::dot(v, c);
         // v's part across c as (c × v) × c = v − (v·c) c: orthogonal to c to rounding relative to
-        // its own length however close n comes to ±c (v − (v·c) c computed directly would keep
-        // ~eps |v| along c)
-        const vec3 cv = glm::cross(c, v), across = glm::cross(cv, c);
-        const T len = std::sqrt(glm::dot(v, v)), sl = std::sqrt(glm::dot(across, across));
+        // the length of c × v (v − (v·c) c computed directly keeps ~eps |v| along c). Within
+        // ~0.06 degrees of ±c (|across| below 2^-10 |v|) c × v is mostly the rounding of its
+        // products, which may lie along c (it does under FMA contraction, where no second pass
+        // of Gram–Schmidt can remove it): there the part across c comes from v's coordinates in
+        // a basis around c instead, orthogonal to c by construction
+        const vec3 cv = glm::cross(c, v);
+        vec3 across = glm::cross(cv, c);
+        T aa = glm::dot(across, across);
+        if (aa < T(0x1p-20) * glm::dot(v, v)) {
+            vec3 bx, by;
+            detail::basis_around(c, bx, by);
+            across = glm::dot(v, bx) * bx + glm::dot(v, by) * by;
+            aa = glm::dot(across, across);
+        }
+        // |v| from its two parts, so that sin^2 g + cos^2 g = 1 to rounding (the sliver of a cap
+        // whose centre is just below the horizon depends on both)
+        const T len = std::sqrt(aa + vz * vz), sl = std::sqrt(aa);
         // sin g and e1 (the unit tangent at the centre pointing away from n, any one when n ∥ c;
         // e2 = c × e1): 1/|n| and 1/|n across c| from one division where the squares keep their
         // digits, from n's part across c divided by its largest component where they would be
@@ -182,40 +195,49 @@ private:
             area_ = detail::pi_v<T> * sa * sa * cg;
             half_ = T(0.5) * area_;
         } else {
-            cut_ = true;
-            if (cg >= T(0)) {  // 1 − x0 = (1 − cos a) + cos a (1 − sin g), 1 − sin g = cos^2 g / (1 + sin g)
-                one_minus_x0_ = omca_ + ca * (cg * cg / (T(1) + sg));
-            } else {  // 1 − sin(g − a) = cos^2(g − a)/(1 + sin(g − a)): the visible width at y = 0
-                d0_ = cos_diff * cos_diff / (T(1) + (sg * ca - cg * sa));
-            }
-            // the rim meets the horizon at y_t = sin a sin theta_t, with
-            // sin theta_t = sqrt(−cos(g + a) cos(g − a)) / (sin a sin g), cos theta_t = |cos a cos g| / (sin a sin g)
-            // (st^2 + ct^2 = (sin a sin g)^2: one reciprocal; sin a sin g > |cos a cos g| >= 0 when cut)
-            const T st = std::sqrt(-cos_sum * cos_diff), ct = std::fabs(ca * cg);
-            const T inv_len = T(1) / (sa * sg);
-            st_ = detail::min_of(st * inv_len, T(1));
-            ct_ = detail::min_of(ct * inv_len, T(1));
-            theta_t_ = detail::angle_of(st_, ct_);
-            const T wt = rim_w(ct_);  // sqrt(1 − y_t^2)
-            inner_ = inner_area<true>(theta_t_, st_, ct_, wt, T(1) / (T(1) + wt));
-            // beyond theta_t (centre above the horizon only): the ellipse's own band,
-            // a' b (x − sin x cos x) from its top, x = pi/2 − theta
-            outer_ = cg > T(0) ? ap_ * sa * detail::angle_minus_sin_cos(detail::half_pi_v<T> - theta_t_, ct_, st_, T(1)) : T(0);
-            half_ = inner_ + outer_;
-            area_ = T(2) * half_;
-            // the slopes of H/inner in theta/theta_t at 0 and at theta_t (the first guess's model):
-            // H'(0) = L(0) b, L(0) = 1 − x0 + a'; H'(theta_t) = 2 a' cos theta_t b cos theta_t
-            // 1/inner, 0 where it is not finite (an empty or subnormal inner piece: the guess is then 0)
-            const T ri = inner_ > T(0) ? T(1) / inner_ : T(0);
-            inv_inner_ = detail::is_finite(ri) ? ri : T(0);
-            const T k = sa * theta_t_ * inv_inner_;
-            m0_ = (cg >= T(0) ? one_minus_x0_ + ap_ : d0_) * k;
-            m1_ = cg > T(0) ? T(2) * ap_ * ct_ * ct_ * k : T(0);
+            init_cut(sa, ca, sg, cg, cos_sum, cos_diff);
         }
         if (!(area_ > T(0)) || !detail::is_finite(area_)) return;
         inv_area_ = T(1) / area_;
         if (!(inv_area_ < density_limit())) return;  // too small an Omega_perp (constructor comment)
         empty_ = false;
+    }
+
+    /// The set-up where the horizon cuts the cap (init; the members up to omca_, x0_ and ap_ set):
+    /// the areas of the visible region's two pieces and the first guess's slopes. Out of line, so
+    /// that every caller runs the same code: the root finding of sample_cut() amplifies the
+    /// last bits of these areas, which a compiler contracting a*b + c into FMAs could otherwise
+    /// round differently where it inlines them into different callers.
+    APSE_NOINLINE APSE_FUNC void init_cut(T sa, T ca, T sg, T cg, T cos_sum, T cos_diff) noexcept {
+        cut_ = true;
+        if (cg >= T(0)) {  // 1 − x0 = (1 − cos a) + cos a (1 − sin g), 1 − sin g = cos^2 g / (1 + sin g)
+            one_minus_x0_ = omca_ + ca * (cg * cg / (T(1) + sg));
+        } else {  // 1 − sin(g − a) = cos^2(g − a)/(1 + sin(g − a)): the visible width at y = 0
+            d0_ = cos_diff * cos_diff / (T(1) + (sg * ca - cg * sa));
+        }
+        // the rim meets the horizon at y_t = sin a sin theta_t, with
+        // sin theta_t = sqrt(−cos(g + a) cos(g − a)) / (sin a sin g), cos theta_t = |cos a cos g| / (sin a sin g)
+        // (st^2 + ct^2 = (sin a sin g)^2: one reciprocal; sin a sin g > |cos a cos g| >= 0 when cut)
+        const T st = std::sqrt(-cos_sum * cos_diff), ct = std::fabs(ca * cg);
+        const T inv_len = T(1) / (sa * sg);
+        st_ = detail::min_of(st * inv_len, T(1));
+        ct_ = detail::min_of(ct * inv_len, T(1));
+        theta_t_ = detail::angle_of(st_, ct_);
+        const T wt = rim_w(ct_);  // sqrt(1 − y_t^2)
+        inner_ = inner_area<true>(theta_t_, st_, ct_, wt, T(1) / (T(1) + wt));
+        // beyond theta_t (centre above the horizon only): the ellipse's own band,
+        // a' b (x − sin x cos x) from its top, x = pi/2 − theta
+        outer_ = cg > T(0) ? ap_ * sa * detail::angle_minus_sin_cos(detail::half_pi_v<T> - theta_t_, ct_, st_, T(1)) : T(0);
+        half_ = inner_ + outer_;
+        area_ = T(2) * half_;
+        // the slopes of H/inner in theta/theta_t at 0 and at theta_t (the first guess's model):
+        // H'(0) = L(0) b, L(0) = 1 − x0 + a'; H'(theta_t) = 2 a' cos theta_t b cos theta_t
+        // 1/inner, 0 where it is not finite (an empty or subnormal inner piece: the guess is then 0)
+        const T ri = inner_ > T(0) ? T(1) / inner_ : T(0);
+        inv_inner_ = detail::is_finite(ri) ? ri : T(0);
+        const T k = sa * theta_t_ * inv_inner_;
+        m0_ = (cg >= T(0) ? one_minus_x0_ + ap_ : d0_) * k;
+        m1_ = cg > T(0) ? T(2) * ap_ * ct_ * ct_ * k : T(0);
     }
 
 public:
@@ -361,7 +383,7 @@ private:
     /// sample() where the horizon cuts the cap (uc clamped, the sampler not empty): u1 → y by
     /// inverting the visible region's cumulative area, then x = x_lo + u2 L (file comment). Out
     /// of line from sample(): its root finding would otherwise be compiled into every caller.
-    APSE_FUNC DirectionSample<T> sample_cut(const vec2& uc) const noexcept {
+    APSE_NOINLINE APSE_FUNC DirectionSample<T> sample_cut(const vec2& uc) const noexcept {
         const T v = T(2) * uc.x - T(1);
         const T side = v < T(0) ? T(-1) : T(1);
         const T f = std::fabs(v);
