@@ -121,7 +121,9 @@ public:
 private:
     /// The set-up for the cap (centre c, tan, sin, cos and 1 − cos of its angular radius a)
     /// and the receiver normal (the constructors' contract). The receiver frame: g from
-    /// n·c, e1 from n's part across c, e2 = c × e1.
+    /// n·c, e1 from n's part across c, e2 = c × e1. Out of line, as init_cut() and sample_cut():
+    /// every caller runs the same code, so that the light built from a sphere and the sampler
+    /// built from its cap agree under FMA contraction too.
     APSE_NOINLINE APSE_FUNC void init(const vec3& c, T ta, T sa, T ca, T omca, const vec3& receiver_normal) noexcept {
         const T scale = detail::max_abs3(receiver_normal);
         if (!(scale > T(0)) || !detail::is_finite(scale) || !detail::finite3(receiver_normal)) return;
