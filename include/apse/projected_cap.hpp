@@ -73,7 +73,7 @@ template <bool Precise, class T> APSE_FUNC T asin_minus_identity(T y, T w) noexc
 /// normal n (file comment; docs/math.md §14): density max(0, n·ω) / Omega_perp in solid angle,
 /// exactly, for caps above the horizon, cut by it (centre above or below it) — no sample below
 /// the horizon — and empty for caps entirely below it. The input square is mapped continuously
-/// and area-preservingly (stratified and QMC points stay stratified). Set-up: two square roots
+/// and area-preservingly (stratified and QMC points stay stratified). Set-up: two cross products, two square roots
 /// and two divisions above the horizon; a few more square roots, an atan2 by polynomials and
 /// one asin when the horizon cuts the cap.
 /// Per sample: closed form above the horizon (the concentric map, two square roots); when cut,
