@@ -224,14 +224,18 @@ template <class T> bool same_u(const Vec2<T>& a, const Vec2<T>& b, const apse::S
 
 /// The same density at d, or — where the two call sites may round differently — one of them 0
 /// and d on the cap's rim to rounding (the cone test then falls either way: SphericalEllipse::
-/// contains): the direction's components carry ~eps absolute error, its offset from the axis is
-/// ~tan alpha, so its gnomonic radius (1 on the rim) is known to ~eps (1 + 1/tan alpha).
+/// contains): the direction's local components carry ~eps absolute error, and its gnomonic
+/// radius |l_xy| / (l_z tan alpha) (1 on the rim, where |l_xy| = sin alpha and l_z = cos alpha)
+/// is their ratio, known to ~eps (1/sin alpha + 1/cos alpha) <= eps (2 + 1/tan alpha + tan alpha)
+/// relative: small caps are limited by their offset from the axis, caps near a hemisphere by
+/// their height over the tangent plane.
 template <class T> bool same_pdf(T a, T b, const apse::SphericalEllipse<T>& cap, const Vec3<T>& d) {
     if (same(a, b)) return true;
     if (exact_equality || (a > T(0) && b > T(0))) return false;
     const glm::dvec3 l(cap.to_local(d));
-    const double rho = std::sqrt(l.x * l.x + l.y * l.y) / (l.z * double(cap.tan_alpha));
-    return std::fabs(rho - 1) <= 16 * double(apse::epsilon<T>()) * (1 + 1 / double(cap.tan_alpha));
+    const double ta = double(cap.tan_alpha);
+    const double rho = std::sqrt(l.x * l.x + l.y * l.y) / (l.z * ta);
+    return std::fabs(rho - 1) <= 16 * double(apse::epsilon<T>()) * (2 + 1 / ta + ta);
 }
 
 /// The light against Sampler(project_sphere(o, c, r), args...) at the points `us` and
