@@ -398,7 +398,7 @@ private:
             const T guess = detail::min_of(cbrt_guess(T(1.5) * target), xmax);
             T sx = T(0), cx = T(1);
             auto eval = [&](T x, T& value, T& derivative) {
-                const detail::SinCosValues<T> sc = sin_cos_in_range(x);
+                const detail::SinCosValues<T> sc = detail::sin_cos_of_nonnegative_angle(x);
                 sx = sc.s;
                 cx = sc.c;
                 value = detail::angle_minus_sin_cos(x, sx, cx, T(1)) - target;
@@ -450,10 +450,7 @@ private:
     /// in the frame (e1, e2, c), l·c > 0 and (l·e1, l·e2)/(l·c) within tan a (an overflowing ratio
     /// means outside).
     APSE_FUNC bool in_cap(const vec3& l) const noexcept {
-        const T s = glm::dot(l, c_);
-        if (!(s > T(0))) return false;
-        const T p = (glm::dot(l, e1_) / s) / ta_, q = (glm::dot(l, e2_) / s) / ta_;
-        return p * p + q * q <= T(1);
+        return detail::inside_cone(glm::dot(l, e1_), glm::dot(l, e2_), glm::dot(l, c_), ta_, ta_);
     }
 
     /// True if pdf() certainly finds the direction w = p e1 + q e2 + s c (|w| = 1 to rounding, as
@@ -540,7 +537,7 @@ private:
     APSE_FUNC void solve_inner(T target, T guess, T& sth, T& cth) const noexcept {
         T lo = T(0), hi = theta_t_, th = detail::clamp(guess, lo, hi);
         const T tol = tolerance() * inner_;
-        const detail::SinCosValues<T> sc0 = sin_cos_in_range(th);
+        const detail::SinCosValues<T> sc0 = detail::sin_cos_of_nonnegative_angle(th);
         sth = sc0.s;
         cth = sc0.c;
         for (int it = 0;; ++it) {
@@ -578,16 +575,10 @@ private:
                 cth = detail::max_of(c1, T(0));
                 break;
             }
-            const detail::SinCosValues<T> sc = sin_cos_in_range(th);
+            const detail::SinCosValues<T> sc = detail::sin_cos_of_nonnegative_angle(th);
             sth = sc.s;
             cth = sc.c;
         }
-    }
-
-    /// sin and cos of theta in [0, pi/2] (no NaN: the root finder's iterates) by the polynomials
-    /// of detail::sin_cos_of_angle, without its clamp's NaN test.
-    static APSE_HOT_INLINE detail::SinCosValues<T> sin_cos_in_range(T th) noexcept {
-        return detail::sin_cos_quarter_turn(detail::min_of(th * T(0.63661977236758134308), T(1)));
     }
 
     /// The first guess of t = theta/theta_t where H = q inner (q in [0, 1]): two Newton steps on

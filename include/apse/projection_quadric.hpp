@@ -205,9 +205,9 @@ APSE_HOT_INLINE SphereCap<T> sphere_cap(const glm::vec<3, T>& o, const glm::vec<
     const T l = std::sqrt(max_of(dist2 - r * r, T(0)));
     // tan alpha = R/L with 1 − cos alpha = R^2/(D (D + L)) (R q, not R^2 / ...: R^2 may be
     // subnormal); the divisions paired (detail::div2)
-    T inv_d, tan_a, q;
+    T tan_a, q;
     div2(r, l, r, dist * (dist + l), tan_a, q);
-    inv_d = T(1) / dist;
+    const T inv_d = T(1) / dist;
     if (!(tan_a >= tan_min<T>())) return c;  // as SphericalEllipse::from_tangents: empty
     c.z = p * inv_d;
     c.distance = scaled ? std::ldexp(dist, sc.e) : dist;

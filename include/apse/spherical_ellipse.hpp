@@ -39,6 +39,15 @@ template <class T> APSE_FUNC constexpr T tan_min() noexcept {
 /// cos = 1/sqrt(q) = (q + sqrt(q)) R, 1 − cos = t²/(q + sqrt(q)) = t² sqrt(q) R, sin = t cos.
 /// Both tangents of an ellipse at once, their square roots and divisions paired (detail::sqrt2,
 /// detail::div2; bit-identical to one at a time).
+/// The cone test of SphericalEllipse::contains for a direction (x, y, z) in the ellipse's frame:
+/// z > 0 and (x/(z ta))^2 + (y/(z tb))^2 <= 1 (gnomonic coordinates over the semi-axes; an
+/// overflowing ratio means outside, a NaN one too).
+template <class T> APSE_FUNC bool inside_cone(T x, T y, T z, T ta, T tb) noexcept {
+    if (!(z > T(0))) return false;
+    const T u = (x / z) / ta, v = (y / z) / tb;
+    return u * u + v * v <= T(1);
+}
+
 template <class T> struct SinCos {
     T s, c, omc;
 };
@@ -223,9 +232,7 @@ template <class T> struct SphericalEllipse {
     /// boundary may fall either way (rounding of to_local).
     APSE_FUNC bool contains(const vec3& world_direction) const noexcept {
         const vec3 l = to_local(world_direction);
-        if (!(l.z > T(0)) || empty()) return false;
-        const T u = (l.x / l.z) / tan_alpha, v = (l.y / l.z) / tan_beta;  // gnomonic / semi-axes
-        return u * u + v * v <= T(1);
+        return !empty() && detail::inside_cone(l.x, l.y, l.z, tan_alpha, tan_beta);
     }
 };
 

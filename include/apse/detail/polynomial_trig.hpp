@@ -9,7 +9,8 @@
 ///
 /// * `sin_cos_quarter_turn(q)`: sin and cos of q pi/2 for q in [0, 1], within 2 eps (Taylor
 ///   polynomials of the sine on the whole quarter turn; the cosine as the sine of 1 − q), and
-///   `sin_cos_of_angle(x)`, the same for an angle x in [0, pi/2];
+///   `sin_cos_of_angle(x)`, the same for an angle x in [0, pi/2] (`sin_cos_of_nonnegative_angle`
+///   where x is known not to be negative or NaN);
 /// * `arc_ratio(s1, c1, s2, c2)`: an approximation of the ratio of two angles in [0, pi/2] given
 ///   by their sines and cosines (Hastings' atan of the half angles' tangents; the ratio within
 ///   3e-8 in double, 3e-7 in float):
@@ -82,12 +83,21 @@ template <class T> APSE_HOT_INLINE SinCosValues<T> sin_cos_quarter_turn(T q) noe
     return {sin_quarter_turn(q), sin_quarter_turn(T(1) - q)};
 }
 
+/// 2/pi: quarter turns per radian.
+template <class T> APSE_FUNC constexpr T quarter_turns_per_radian() noexcept { return T(0.63661977236758134308); }
+
 /// sin and cos of the angle x in [0, pi/2] (clamped into it): sin_cos_quarter_turn(x 2/pi). Its
 /// error is sin_cos_quarter_turn's (2 eps, tested) plus the rounding of x 2/pi (half an ulp of
 /// the quarter-turn fraction, i.e. at most ~eps of the angle, times a derivative <= 1): within
 /// ~3 eps absolute by that bound, and a few eps relative for small x (the sine is x (1 + O(x^2))).
 template <class T> APSE_HOT_INLINE SinCosValues<T> sin_cos_of_angle(T x) noexcept {
-    return sin_cos_quarter_turn(clamp(x * T(0.63661977236758134308), T(0), T(1)));
+    return sin_cos_quarter_turn(clamp(x * quarter_turns_per_radian<T>(), T(0), T(1)));
+}
+
+/// sin_cos_of_angle for an angle known to be >= 0 and not NaN (a root finder's bracketed iterate):
+/// the same values there, without the clamp's NaN test (only x 2/pi rounding above 1 is capped).
+template <class T> APSE_HOT_INLINE SinCosValues<T> sin_cos_of_nonnegative_angle(T x) noexcept {
+    return sin_cos_quarter_turn(min_of(x * quarter_turns_per_radian<T>(), T(1)));
 }
 
 /// atan(z) for z in [0, 1], absolute error below 2e-8 (Hastings' degree-17 odd polynomial,
