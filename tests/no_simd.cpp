@@ -6,7 +6,7 @@
 #ifndef APSE_NO_SIMD  // (the fma-nosimd configuration defines it for every file)
 #define APSE_NO_SIMD
 #endif
-#include <apse/detail/pairs.hpp>
+#include <apse/detail/math.hpp>
 
 #include <cmath>
 #include <cstdio>

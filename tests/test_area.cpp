@@ -1,4 +1,4 @@
-// Tests of detail/concentric.hpp (Shirley–Chiu map, polar form) and baselines/area.hpp
+// Tests of detail/polar.hpp (Shirley–Chiu map, polar form) and baselines/area.hpp
 // (uniform-by-area disk sampling with the solid-angle pdf).
 #include <apse/baselines/area.hpp>
 #include <apse/projection.hpp>

@@ -1,9 +1,9 @@
 // Tests of math.hpp (the public constants) and detail/math.hpp: the guarded scalar helpers and the
 // bracketed Newton–bisection root finder; the per-sample pieces written without branches
-// (detail/quadrant.hpp fold_quadrant, detail/polynomial_trig.hpp).
+// (detail/polar.hpp fold_quadrant, detail/math.hpp).
 #include <apse/math.hpp>
-#include <apse/detail/polynomial_trig.hpp>
-#include <apse/detail/quadrant.hpp>
+#include <apse/detail/math.hpp>
+#include <apse/detail/polar.hpp>
 
 #include "support/catch.hpp"
 

@@ -4,7 +4,7 @@
 // A float sampler must not form subnormal numbers for ordinary lights: on x86 each subnormal
 // result costs tens of cycles, and the set-up of the tabulated maps once formed several per
 // shading point for every light farther than ~250 radii (the high powers of a short polynomial's
-// argument in detail/polynomial_trig.hpp). The check is the floating-point environment's
+// argument in detail/math.hpp). The check is the floating-point environment's
 // underflow flag (C99 <fenv.h>, raised for every tiny result), so the test fails wherever any
 // operation of the set-up or of a sample underflows.
 

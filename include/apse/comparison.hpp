@@ -13,7 +13,7 @@
 /// (sample / pdf / invert / empty / ellipse; CosineWeighted, DiskLight and SphereLight take them).
 
 #include "maps/radial.hpp"
-#include "maps/tabulated.hpp"
+#include "maps/tabulated_ld_radial.hpp"
 
 namespace apse {
 

@@ -6,7 +6,7 @@
 /// Version macros and the function qualifiers every public apse function carries.
 ///
 /// Macros a user may define before including apse:
-/// * `APSE_NO_SIMD`: no SSE intrinsics on x86 hosts (detail/pairs.hpp computes its pairs of
+/// * `APSE_NO_SIMD`: no SSE intrinsics on x86 hosts (detail/math.hpp computes its pairs of
 ///   square roots and quotients with scalar operations, as in device code; results identical).
 
 // C++17 is required (if constexpr, inline variables, hex float literals). MSVC reports

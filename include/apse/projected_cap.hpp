@@ -31,10 +31,8 @@
 #include "projected_solid_angle.hpp"
 #include "sample.hpp"
 #include "spherical_ellipse.hpp"
-#include "detail/concentric.hpp"
+#include "detail/polar.hpp"
 #include "detail/glm.hpp"
-#include "detail/polynomial_trig.hpp"
-#include "detail/quadrant.hpp"
 #include "detail/vector.hpp"
 
 namespace apse {

@@ -27,7 +27,7 @@
 /// q = sin(beta/2)/sin(alpha/2) (the ratio of the Lambert equal-area images of the semi-axes: the
 /// marginal in tau is nearly uniform for every ellipse, and smooth); u1 = tau/(2 pi) (folded
 /// onto quadrants as the radial maps do), u2 the conditional CDF. Every sine and cosine of a
-/// known range is a short polynomial (detail/polynomial_trig.hpp): no library call.
+/// known range is a short polynomial (detail/math.hpp): no library call.
 
 #include <cmath>
 
@@ -37,8 +37,7 @@
 #include "spherical_ellipse.hpp"
 #include "detail/glm.hpp"
 #include "detail/linear_density.hpp"
-#include "detail/polynomial_trig.hpp"
-#include "detail/quadrant.hpp"
+#include "detail/polar.hpp"
 #include "detail/vector.hpp"
 
 namespace apse {

@@ -11,7 +11,6 @@
 
 #include "config.hpp"
 #include "detail/glm.hpp"
-#include "detail/pairs.hpp"
 #include "detail/type_identity.hpp"
 #include "detail/vector.hpp"
 #include "disk_frame.hpp"

@@ -29,7 +29,6 @@
 #include "maps/ld_radial.hpp"
 #include "maps/parallel.hpp"
 #include "maps/radial.hpp"
-#include "maps/tabulated.hpp"
 #include "maps/tabulated_ld_radial.hpp"
 #include "maps/tabulation_table.hpp"
 

@@ -10,7 +10,6 @@
 
 #include "config.hpp"
 #include "detail/glm.hpp"
-#include "detail/pairs.hpp"
 #include "detail/carlson.hpp"
 #include "detail/math.hpp"
 

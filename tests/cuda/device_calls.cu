@@ -66,7 +66,7 @@ __device__ T baseline_rectangle_gamito_calls(T a) {
 }
 
 // Spherical ellipse, projections, area sampling (spherical_ellipse.hpp, projection.hpp,
-// baselines/area.hpp, detail/concentric.hpp): their own kernel (the ellipse and ellipsoid
+// baselines/area.hpp, detail/polar.hpp): their own kernel (the ellipse and ellipsoid
 // projections inline two 3x3 Jacobi eigen-solvers each).
 template <class T>
 __global__ void projection_kernel(const T* in, T* out, int n) {

@@ -15,7 +15,7 @@
 #include <cmath>
 
 #include "../config.hpp"
-#include "../detail/concentric.hpp"
+#include "../detail/polar.hpp"
 #include "../detail/glm.hpp"
 #include "../detail/type_identity.hpp"
 #include "../detail/vector.hpp"

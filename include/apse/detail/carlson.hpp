@@ -25,7 +25,7 @@
 ///
 /// Speed on x86-64 (see docs/elliptic.md) is bound by the square-root unit: a duplication step
 /// needs three roots (four for R_J) whose latency chains into the next step, and the unit takes a
-/// new double root only every ~8 cycles; sqrt2 (detail/pairs.hpp) pairs them in one SSE
+/// new double root only every ~8 cycles; sqrt2 (detail/math.hpp) pairs them in one SSE
 /// instruction. Branches whose outcome depends on the chain (loop exits, rc1's cases) are kept
 /// few: a mispredicted one discards the duplication steps already in flight behind it.
 
@@ -33,7 +33,6 @@
 
 #include "../config.hpp"
 #include "math.hpp"
-#include "pairs.hpp"
 
 namespace apse {
 namespace detail {

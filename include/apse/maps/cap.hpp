@@ -20,10 +20,8 @@
 #include "../detail/math.hpp"
 #include "../sample.hpp"
 #include "../spherical_ellipse.hpp"
-#include "../detail/concentric.hpp"
+#include "../detail/polar.hpp"
 #include "../detail/glm.hpp"
-#include "../detail/polynomial_trig.hpp"
-#include "../detail/quadrant.hpp"
 #include "tabulation_table.hpp"
 
 namespace apse {

@@ -42,7 +42,7 @@
 #include "../detail/carlson.hpp"
 #include "../spherical_ellipse.hpp"
 #include "../detail/math.hpp"
-#include "../detail/polynomial_trig.hpp"
+#include "../detail/polar.hpp"
 
 
 namespace apse {
@@ -73,21 +73,6 @@ template <class T> struct ParallelPoint {
     T ct, st, c_max;    ///< the boundary point P in tau form (for the radial sector)
     T density;          ///< d(edge area)/dt
     T slope;            ///< d density / dt
-};
-
-/// The ellipse's semi-axis constants that the polar step of the radial maps needs (the boundary
-/// point of an azimuth and C(tau), maps/radial.hpp): all that the tabulated maps keep.
-template <class T> struct EllipseAxes {
-    T a, b;          ///< sin alpha, sin beta
-    T ca, cb;        ///< cos alpha, cos beta
-    T ca2, cb2;      ///< their squares
-
-    static APSE_FUNC EllipseAxes make(const SphericalEllipse<T>& e) noexcept {
-        return {e.sin_alpha, e.sin_beta, e.cos_alpha, e.cos_beta, e.cos_alpha * e.cos_alpha, e.cos_beta * e.cos_beta};
-    }
-
-    /// C(tau) = cos theta_max from (cos tau, sin tau).
-    APSE_FUNC T c_max(T ct, T st) const noexcept { return std::sqrt(ca2 * ct * ct + cb2 * st * st); }
 };
 
 /// Per-ellipse constants of the cumulative areas (set-up: no transcendental call but the one R_J

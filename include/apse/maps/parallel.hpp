@@ -16,7 +16,7 @@
 #include "../spherical_ellipse.hpp"
 #include "../detail/glm.hpp"
 #include "../detail/inversion.hpp"
-#include "../detail/quadrant.hpp"
+#include "../detail/polar.hpp"
 #include "cumulative_area.hpp"
 
 namespace apse {

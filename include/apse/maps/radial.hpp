@@ -7,12 +7,8 @@
 /// azimuth by inverting the cumulative area, u2 the polar angle uniformly in solid angle along
 /// the wedge. Area-preserving; continuous on the open square except that u1 = 0 and u1 = 1 meet
 /// on the major axis (+x) and the whole edge u2 = 0 maps to the centre.
-///
-/// Also the polar step of the radial maps (namespace detail), written once for RadialMap and
-/// TabulatedMap (and through them LdRadialMap and TabulatedLdRadialMap): once u1 has fixed the
-/// azimuth, i.e. the boundary point of the ellipse at that azimuth, u2 picks the polar angle
-/// uniformly in solid angle along the wedge from the centre to that boundary point; and the
-/// inverse, u2 of a direction. The cumulative area u1 inverts: cumulative_area.hpp.
+/// The polar step it shares with TabulatedMap: detail/polar.hpp; the cumulative area u1
+/// inverts: cumulative_area.hpp.
 
 #include <cmath>
 
@@ -22,68 +18,12 @@
 #include "../spherical_ellipse.hpp"
 #include "../detail/glm.hpp"
 #include "../detail/inversion.hpp"
-#include "../detail/polynomial_trig.hpp"
-#include "../detail/quadrant.hpp"
+#include "../detail/polar.hpp"
 #include "cap.hpp"
 #include "cumulative_area.hpp"
 
 namespace apse {
 namespace detail {
-
-/// The local direction (x along the major axis, z the centre) at the solid-angle fraction u2 in
-/// [0, 1] of the wedge towards the first-quadrant boundary point with orthographic eccentric
-/// anomaly (cos tau, sin tau) = (px, py)/n, given unnormalised (any n > 0: n = 1 for a unit
-/// pair), and cos theta_max = c there (k.c_max), reflected into quadrant q (place_in_quadrant).
-/// `g` = 1/(n^2 (1 + C)) (the caller may have it from a paired or shared division).
-/// sin theta_max = r = |(a cos tau, b sin tau)|; 1 − cos theta = v = u2 (1 − C), 1 − C = r^2/(1 + C),
-/// so v = u2 |(a px, b py)|^2 g; cos theta = (1 − u2) + u2 C (no cancellation near the horizon of
-/// large ellipses); the in-plane part is (a px, b py) sin theta / (n r), with
-/// sin theta / (n r) = sqrt(u2 (2 − v) g): no division here and one square root (r itself is
-/// never needed). u2 = 0 gives the centre, u2 = 1 the boundary point.
-template <class T>
-APSE_FUNC glm::vec<3, T> radial_direction(const EllipseAxes<T>& k, const QuadrantFold<T>& q, T px, T py, T c, T g,
-                                          T u2) noexcept {
-    const T ax = k.a * px, by = k.b * py;
-    const T v = u2 * ((ax * ax + by * by) * g);
-    const T scale = std::sqrt(u2 * (T(2) - v) * g);
-    return place_in_quadrant(q, ax * scale, by * scale, (T(1) - u2) + u2 * c);
-}
-
-/// radial_direction for a unit (cos tau, sin tau) = (ct, st), with 1/(1 + C) computed here (one
-/// division).
-template <class T>
-APSE_FUNC glm::vec<3, T> radial_direction(const EllipseAxes<T>& k, const QuadrantFold<T>& q, T ct, T st, T c,
-                                          T u2) noexcept {
-    return radial_direction(k, q, ct, st, c, T(1) / (T(1) + c), u2);
-}
-
-/// The orthographic eccentric anomaly (cos tau, sin tau) of the Lambert anomaly lambda given as
-/// (cl, sl) = (cos lambda, sin lambda) >= 0: tan tau = kappa tan lambda, kappa =
-/// cos(alpha/2)/cos(beta/2) (the equal-area image of a small ellipse, exact for caps; the radial
-/// map's first guess and the tabulated map's variable). Writes (ct, st), both >= 0.
-template <class T> APSE_FUNC void lambert_tau(T kappa, T cl, T sl, T& ct, T& st) noexcept {
-    const T px = cl, py = kappa * sl, n = std::sqrt(px * px + py * py);
-    ct = n > T(0) ? px / n : T(1);
-    st = n > T(0) ? py / n : T(0);
-}
-
-/// The two terms of the inverse of radial_direction's u2: u2 = one_minus_cos / one_minus_c.
-template <class T> struct RadialFraction {
-    T one_minus_cos;  ///< 1 − cos theta of the direction
-    T one_minus_c;    ///< 1 − C of the boundary point at its azimuth
-};
-
-/// The terms of u2 for the unit local direction (x, y, z), z > 0 (x, y of either sign), whose
-/// azimuth has the first-quadrant boundary point (ct, st) with cos theta_max = c there:
-/// 1 − z = (x^2 + y^2)/(1 + z) and 1 − C = r^2/(1 + C) (both without cancellation). The caller
-/// divides and clamps (and chooses what a zero 1 − C gives).
-template <class T>
-APSE_FUNC RadialFraction<T> radial_fraction(const EllipseAxes<T>& k, T x, T y, T z, T ct, T st, T c) noexcept {
-    const T ax = k.a * ct, by = k.b * st;
-    const T one_minus_z = (x * x + y * y) / (T(1) + z);
-    const T one_minus_c = (ax * ax + by * by) / (T(1) + c);
-    return {one_minus_z, one_minus_c};
-}
 
 /// Radial area-preserving map of the unit square onto a spherical ellipse (docs/math.md §4).
 ///

@@ -36,9 +36,8 @@
 #include "../spherical_ellipse.hpp"
 #include "../detail/glm.hpp"
 #include "../detail/math.hpp"
-#include "../detail/pairs.hpp"
-#include "../detail/quadrant.hpp"
-#include "tabulated.hpp"
+#include "../detail/polar.hpp"
+#include "tabulated_ld_radial.hpp"
 
 namespace apse {
 namespace detail {

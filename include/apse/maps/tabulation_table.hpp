@@ -3,7 +3,7 @@
 #pragma once
 
 /// @file maps/tabulation_table.hpp
-/// The table the tabulated maps (maps/tabulated.hpp) draw from: `TabulationTableN` /
+/// The table the tabulated maps (maps/tabulated_ld_radial.hpp) draw from: `TabulationTableN` /
 /// `TabulationTable` (its rows: the normalised CDF of the closed-form area density in the
 /// Lambert anomaly, for a grid of ellipse shapes, docs/math.md §6), its non-owning
 /// `TabulationView`, and `default_table()`.
@@ -45,7 +45,7 @@ APSE_FUNC bool table_usable(const TabulationView& table) noexcept {
     return table.cdf != nullptr && table.bins >= 1 && table.alpha_nodes >= 2 && table.ratio_nodes >= 2;
 }
 
-/// Unnormalised area density of the quadrant in the Lambert anomaly lambda (maps/tabulated.hpp
+/// Unnormalised area density of the quadrant in the Lambert anomaly lambda (maps/tabulated_ld_radial.hpp
 /// file comment), divided by the constant a b: kappa / ((1 + C(tau)) (cos^2 lambda + kappa^2
 /// sin^2 lambda)), for cos alpha = ca, cos beta = cb, kappa = sqrt((1 + ca)/(1 + cb)), lambda in
 /// [0, pi/2]. Double precision (table construction only).
@@ -87,7 +87,7 @@ APSE_FUNC void tabulated_fill_row(float* row, int bins, double alpha, double bet
 }  // namespace detail
 
 /// The tabulation table shared by all TabulatedMap / TabulatedLdRadialMap instances (docs/math.md §6,
-/// redone unbiased; maps/tabulated.hpp file comment): Bins + 1 CDF entries in lambda for each of
+/// redone unbiased; maps/tabulated_ld_radial.hpp file comment): Bins + 1 CDF entries in lambda for each of
 /// AlphaNodes × RatioNodes shapes: sqrt(cos alpha) = 1 − i/(AlphaNodes − 1) (nodes dense near the
 /// hemisphere, where the density changes fastest with the shape), beta = alpha j/(RatioNodes − 1).
 /// Plain data, trivially copyable (copy it to device memory as is); memory
