@@ -26,9 +26,12 @@ template <class T> __attribute__((no_instrument_function)) T one_sample(const ap
                                                                 glm::vec<3, T>(0, 0.2, -1), T(0.7));
     const apse::TabulatedLdRadialMap<T> map(ellipse, table);
     T sum = 0;
-    for (T u1 : {T(0.1), T(0.4), T(0.7), T(0.95)}) {  // every quadrant
+    // one point of the square in each quadrant of the concentric disk (the signs of 2u − 1), each
+    // in a different sector of the concentric map (right, top, left, bottom)
+    const glm::vec<2, T> points[] = {{T(0.9), T(0.6)}, {T(0.4), T(0.9)}, {T(0.1), T(0.3)}, {T(0.6), T(0.05)}};
+    for (const glm::vec<2, T>& u : points) {
         recording = true;
-        const apse::DirectionSample<T> s = map.sample(glm::vec<2, T>(u1, T(0.77)));
+        const apse::DirectionSample<T> s = map.sample(u);
         recording = false;
         sum += s.pdf;
     }

@@ -32,6 +32,7 @@
 ///   the radial map), written once for LdRadialMap and TabulatedLdRadialMap.
 
 #include <cmath>
+#include <type_traits>
 #include <utility>
 
 #include "../config.hpp"
